@@ -1,0 +1,66 @@
+/*
+ * pcl_flowseg - shape segmentation by flow discretization (Dey, Giesen, Goswami).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/flow_result.h>
+#include <pcl_flowseg/status.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace pcl_flowseg {
+
+/** \brief Default merge threshold rho (see FlowParameters::rho). */
+constexpr double kDefaultRho = 1.3;
+
+/** \brief How the dimension of the flow is chosen. */
+enum class DimensionMode
+{
+  Automatic = 0, ///< 2D when all points lie on one plane, 3D otherwise
+  Planar = 2,    ///< 2D: points are projected onto their plane
+  Spatial = 3    ///< 3D: fails on coplanar input
+};
+
+/** \brief Parameters of the flow segmentation. */
+struct FlowParameters
+{
+  /** Merge threshold rho (dimensionless, > 0). Two stable manifolds that share a facet t are
+    * merged when the circumradii of both their maximum cells are below rho times the
+    * circumradius of t (paper, section 4, discrete rule; radii, not squared radii).
+    * Values below 1 merge nothing. Default kDefaultRho. */
+  double rho = kDefaultRho;
+  DimensionMode dimension = DimensionMode::Automatic;
+  /** Relative flatness below which Automatic chooses 2D: the spread of the points normal to
+    * their best-fit plane divided by the bounding-box diagonal. Default 1e-9. */
+  double planar_tolerance = 1e-9;
+};
+
+/** \brief Progress report: a stage name and the fraction of the whole run done (0..1). */
+using ProgressCallback = std::function<void (const std::string& stage, double fraction)>;
+
+/** \brief Runs the whole flow segmentation on raw coordinates.
+  *
+  * \param[in] points input coordinates (z ignored for 2D input given with z = const); may
+  *            contain NaN/Inf (skipped and counted) and duplicates (labelled like the first
+  *            copy and counted).
+  * \param[in] params parameters; rejected when absurd (rho not finite or <= 0).
+  * \param[out] result everything computed; left empty on failure.
+  * \param[in] progress optional progress callback.
+  * \return ok, or a message saying why the input cannot be segmented (too few points,
+  *         all points collinear, coplanar in 3D mode, ...). Never throws for bad input.
+  */
+Status
+runFlowSegmentation (const std::vector<Eigen::Vector3d>& points,
+                     const FlowParameters& params,
+                     FlowResult& result,
+                     const ProgressCallback& progress = ProgressCallback ());
+
+/** \brief Re-runs only the merging stage of an existing result with another rho.
+  * Cheap compared to runFlowSegmentation: the triangulation and flow are kept. */
+Status
+remergeFlowSegmentation (double rho, FlowResult& result);
+
+} // namespace pcl_flowseg

@@ -1,0 +1,132 @@
+/*
+ * pcl_flowseg - shape segmentation by flow discretization (Dey, Giesen, Goswami).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace pcl_flowseg {
+
+/** \brief Label of a point that has no segment (non-finite input coordinates). */
+constexpr std::uint32_t kNoSegment = std::numeric_limits<std::uint32_t>::max();
+
+/** \brief Marks a missing neighbour (the convex hull side of a cell). */
+constexpr int kInfiniteCell = -1;
+
+/** \brief One Delaunay cell (triangle in 2D, tetrahedron in 3D) and its place in the flow.
+  *
+  * Vertices are indices into the prepared point list (FlowResult::point_to_vertex maps
+  * input points to them). In 2D only the first three entries of \a vertices and
+  * \a neighbors are used; the fourth is -1. neighbors[i] is the cell across the facet
+  * opposite vertices[i], or kInfiniteCell on the convex hull.
+  */
+struct FlowCell
+{
+  std::array<int, 4> vertices{{-1, -1, -1, -1}};
+  std::array<int, 4> neighbors{{kInfiniteCell, kInfiniteCell, kInfiniteCell, kInfiniteCell}};
+  /** Bit i set: the cell flows across the facet opposite vertices[i] (paper's relation <). */
+  std::uint8_t flow_mask = 0;
+  /** Index of the facet (0..d) the strengthened flow keeps, or -1 for a maximum. */
+  std::int8_t successor_facet = -1;
+  /** Squared circumradius (the height of the cell's Voronoi vertex). */
+  double squared_radius = 0.0;
+  /** Area (2D) or volume (3D). */
+  double volume = 0.0;
+  /** Centroid of the cell, in the frame of the input cloud. */
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
+  /** Stable manifold (before merging) the cell belongs to: index into FlowResult::manifolds. */
+  int manifold = -1;
+  /** Segment (after merging) the cell belongs to: index into FlowResult::segments. */
+  int segment = -1;
+};
+
+/** \brief A maximum of the distance function: a cell that contains its own circumcentre. */
+struct FlowMaximum
+{
+  int cell = -1;                                   ///< cell holding the maximum
+  Eigen::Vector3d location = Eigen::Vector3d::Zero (); ///< the circumcentre (input frame)
+  double height = 0.0;                             ///< squared circumradius
+};
+
+/** \brief A facet shared by two cells of different segments whose circumradius is the highest
+  * among all facets those two segments share: the discrete saddle between them. */
+struct SaddleFacet
+{
+  int segment_a = -1;            ///< smaller segment (or manifold) index of the pair
+  int segment_b = -1;            ///< larger segment (or manifold) index of the pair
+  int cell = -1;                 ///< a cell on one side of the facet
+  int facet = -1;                ///< facet of \a cell (index of the opposite vertex)
+  std::array<int, 3> vertices{{-1, -1, -1}}; ///< facet vertices (third is -1 in 2D)
+  double squared_radius = 0.0;   ///< squared circumradius of the facet (its height)
+  Eigen::Vector3d location = Eigen::Vector3d::Zero (); ///< centre of the facet's smallest circumsphere
+};
+
+/** \brief A set of cells: a stable manifold of one maximum, or a segment after merging. */
+struct FlowSegment
+{
+  /** True for the cells whose flow leaves the convex hull (the maximum at infinity). */
+  bool flows_to_infinity = false;
+  /** Highest maximum of the segment (for the infinity segment: cell -1, height +inf). */
+  FlowMaximum maximum;
+  /** Indices into FlowResult::maxima of all maxima merged into this segment. */
+  std::vector<int> maxima;
+  double volume = 0.0;                         ///< area (2D) or volume (3D)
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero (); ///< volume-weighted centroid
+  std::size_t cell_count = 0;                  ///< number of Delaunay cells
+  std::size_t point_count = 0;                 ///< number of input points labelled with it
+};
+
+/** \brief Wall-clock time of each stage of FlowSegmentation, in milliseconds. */
+struct StageTimings
+{
+  double preparation_ms = 0.0; ///< finite filter, duplicates, dimension detection
+  double delaunay_ms = 0.0;    ///< CGAL triangulation and its conversion to cells
+  double flow_ms = 0.0;        ///< flow relation, maxima, stable manifolds
+  double merge_ms = 0.0;       ///< rho-merging and segment statistics
+  double labels_ms = 0.0;      ///< per-point labels
+  double total_ms = 0.0;
+};
+
+/** \brief Everything FlowSegmentation computes, with no CGAL type in it. */
+struct FlowResult
+{
+  int dimension = 0;                 ///< 2 or 3: the dimension the flow was computed in
+  std::size_t input_points = 0;      ///< points handed in (after setIndices)
+  std::size_t non_finite_points = 0; ///< points skipped for NaN/Inf coordinates
+  std::size_t duplicate_points = 0;  ///< points equal to an earlier point (labelled like it)
+
+  /** Coordinates of the unique finite points (the triangulation's vertices), input frame. */
+  std::vector<Eigen::Vector3d> vertices;
+  /** For each input point, its vertex in \a vertices, or -1 when it was not finite. */
+  std::vector<int> point_to_vertex;
+
+  std::vector<FlowCell> cells;        ///< all finite Delaunay cells
+  std::vector<FlowMaximum> maxima;    ///< all maxima, ordered by decreasing height
+  /** Stable manifolds before merging; the last one flows to infinity when any cell does. */
+  std::vector<FlowSegment> manifolds;
+  /** Segments after rho-merging, ordered by decreasing volume. */
+  std::vector<FlowSegment> segments;
+  /** Saddles between adjacent stable manifolds (segment_a/b index \a manifolds). */
+  std::vector<SaddleFacet> manifold_adjacency;
+  /** Saddles between adjacent segments after merging (segment_a/b index \a segments). */
+  std::vector<SaddleFacet> segment_adjacency;
+
+  /** Segment of each input point (kNoSegment for non-finite points). */
+  std::vector<std::uint32_t> point_labels;
+
+  /** Cells that could not be ordered by the flow (only on degenerate input; they become
+    * their own maxima). Zero in exact arithmetic; reported to make any such case visible. */
+  std::size_t cycle_breaks = 0;
+
+  StageTimings timings;
+  std::vector<std::string> warnings; ///< human-readable notes about the input
+};
+
+} // namespace pcl_flowseg

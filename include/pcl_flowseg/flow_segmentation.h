@@ -1,0 +1,121 @@
+/*
+ * pcl_flowseg - shape segmentation by flow discretization (Dey, Giesen, Goswami).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/flow_core.h>
+#include <pcl_flowseg/flow_result.h>
+
+#include <pcl/PointIndices.h>
+#include <pcl/pcl_base.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <string>
+#include <vector>
+
+namespace pcl {
+
+/** \brief Segments a point sample of a closed curve (2D) or surface (3D) into the stable
+  * manifolds of the maxima of its distance function (Dey, Giesen, Goswami 2003), merged by the
+  * rho rule.
+  *
+  * The flow is computed on the Delaunay triangulation of the points (CGAL, exact predicates),
+  * exactly in 2D and with the paper's strengthened flow relation in 3D. Segments are sets of
+  * Delaunay cells; each input point is labelled with the segment owning most of the volume of
+  * its incident cells.
+  *
+  * Until interior/exterior separation is added, segments cover all of the convex hull: the
+  * segment whose cells flow out of the hull is flagged flows_to_infinity and comes last.
+  *
+  * Usage:
+  * \code
+  * pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  * seg.setInputCloud (cloud);
+  * seg.setRho (1.3);
+  * std::vector<pcl::PointIndices> segments;
+  * if (!seg.segment (segments)) std::cerr << seg.getLastError () << "\n";
+  * \endcode
+  */
+template <typename PointT>
+class FlowSegmentation : public PCLBase<PointT>
+{
+  using BasePCLBase = PCLBase<PointT>;
+  using BasePCLBase::deinitCompute;
+  using BasePCLBase::indices_;
+  using BasePCLBase::initCompute;
+  using BasePCLBase::input_;
+
+public:
+  using Ptr = shared_ptr<FlowSegmentation<PointT>>;
+  using ConstPtr = shared_ptr<const FlowSegmentation<PointT>>;
+  using PointCloudConstPtr = typename PointCloud<PointT>::ConstPtr;
+
+  FlowSegmentation () = default;
+
+  /** \brief Merge threshold rho (dimensionless, finite, > 0; default pcl_flowseg::kDefaultRho).
+    * Two stable manifolds sharing a facet t merge when both their maximum cells have a
+    * circumradius below rho times the circumradius of t. Below 1 nothing merges; larger values
+    * merge more (never giving more segments). */
+  inline void setRho (double rho) { params_.rho = rho; }
+  inline double getRho () const { return params_.rho; }
+
+  /** \brief 0 = automatic (default: 2D when all points lie on one plane), 2 or 3 to force. */
+  inline void
+  setDimension (int dimension)
+  {
+    params_.dimension = dimension == 2 ? pcl_flowseg::DimensionMode::Planar
+                        : dimension == 3 ? pcl_flowseg::DimensionMode::Spatial
+                                         : pcl_flowseg::DimensionMode::Automatic;
+    dimension_ok_ = dimension == 0 || dimension == 2 || dimension == 3;
+  }
+  inline int getDimension () const { return static_cast<int> (params_.dimension); }
+
+  /** \brief Flatness (spread normal to the best-fit plane / bounding-box diagonal) below which
+    * automatic mode chooses 2D. Default 1e-9. */
+  inline void setPlanarTolerance (double tolerance) { params_.planar_tolerance = tolerance; }
+  inline double getPlanarTolerance () const { return params_.planar_tolerance; }
+
+  /** \brief Called with a stage name and the fraction done; empty by default. */
+  inline void setProgressCallback (const pcl_flowseg::ProgressCallback& cb) { progress_ = cb; }
+
+  /** \brief Segments the input (honouring setIndices).
+    * \param[out] segments one PointIndices per segment, in the order of getResult().segments
+    *             (finite segments by decreasing volume, the one at infinity last), holding
+    *             indices into the input cloud.
+    * \return false on bad input or parameters; getLastError() says why, segments is empty. */
+  bool segment (std::vector<PointIndices>& segments);
+
+  /** \brief Re-runs only the merging with another rho (keeps triangulation and flow).
+    * \return false when segment() has not succeeded before or rho is invalid. */
+  bool remerge (double rho, std::vector<PointIndices>& segments);
+
+  /** \brief One PointXYZL per point of the input cloud, in input order: label = segment id;
+    * points outside the indices or with non-finite coordinates get pcl_flowseg::kNoSegment. */
+  void getLabelCloud (PointCloud<PointXYZL>& labels) const;
+
+  /** \brief Everything computed by the last successful segment(): cells, maxima, stable
+    * manifolds, segments, adjacency (saddles), per-point labels. */
+  inline const pcl_flowseg::FlowResult& getResult () const { return result_; }
+  /** \brief Stage timings of the last run, in milliseconds. */
+  inline const pcl_flowseg::StageTimings& getTimings () const { return result_.timings; }
+  /** \brief Why the last segment() or remerge() failed (empty after success). */
+  inline const std::string& getLastError () const { return last_error_; }
+
+protected:
+  void extractIndices (std::vector<PointIndices>& segments) const;
+
+  pcl_flowseg::FlowParameters params_;
+  bool dimension_ok_ = true;
+  pcl_flowseg::ProgressCallback progress_;
+  pcl_flowseg::FlowResult result_;
+  std::vector<index_t> used_indices_; ///< cloud index of each point handed to the core
+  std::string last_error_;
+};
+
+} // namespace pcl
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_flowseg/impl/flow_segmentation.hpp>
+#endif

@@ -1,0 +1,54 @@
+/*
+ * pcl_flowseg - writing segmentation results: labelled PCD, JSON summary, coloured PLY.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/flow_result.h>
+#include <pcl_flowseg/status.h>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace pcl_flowseg {
+
+/** \brief A distinct colour for segment \a id (golden-ratio hues); grey for kNoSegment and for
+  * the segment at infinity. */
+std::array<std::uint8_t, 3>
+segmentColour (std::uint32_t id, bool infinity = false);
+
+/** \brief Writes \a labels as a PCD file (ASCII or binary). The file appears whole or not at all. */
+Status
+writeLabelCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZL>& labels, bool binary);
+
+/** \brief Writes a plain point cloud as PCD (ASCII or binary). Atomic. */
+Status
+writePointCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZ>& cloud, bool binary);
+
+/** \brief Extra facts for the JSON summary that the result does not hold. */
+struct RunInfo
+{
+  std::string input;   ///< input file name
+  double rho = 0.0;    ///< merge threshold used
+  double read_ms = 0.0;
+};
+
+/** \brief Writes a JSON summary: counts (points, cells, maxima, manifolds, segments), the
+  * segments (id, volume, centroid, point and cell counts, maximum height and location), the
+  * adjacency (saddles), timings per stage in ms, warnings. Atomic. */
+Status
+writeSegmentationJson (const std::string& path, const FlowResult& result, const RunInfo& info);
+
+/** \brief Writes a PLY a viewer shows in colour: every input point coloured by its segment,
+  * and in 2D the Delaunay triangles as faces coloured by segment. \a labels holds one point per
+  * point handed to the segmentation, in that order (FlowSegmentation::getLabelCloud of a run
+  * without setIndices). Points with non-finite coordinates are not written. Atomic. */
+Status
+writeSegmentationPly (const std::string& path, const FlowResult& result,
+                      const pcl::PointCloud<pcl::PointXYZL>& labels);
+
+} // namespace pcl_flowseg

@@ -1,0 +1,33 @@
+/*
+ * pcl_flowseg - internal: Delaunay triangulation turned into flat, CGAL-free cells.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/flow_result.h>
+
+#include <string>
+#include <vector>
+
+namespace pcl_flowseg {
+namespace core {
+
+/** \brief Triangulates 2D points (CGAL, exact predicates) into \a cells.
+  *
+  * Fills vertices, neighbors, flow_mask (exact obtuse-angle test: a triangle flows across the
+  * edge opposite an obtuse angle), squared_radius and volume (area). Centroids are left for the
+  * caller, who knows the input frame. Returns false with \a error when the points do not span
+  * the plane (fewer than 3 or all collinear). Points must be distinct. */
+bool
+triangulate2D (const std::vector<Eigen::Vector2d>& points,
+               std::vector<FlowCell>& cells, std::string& error);
+
+/** \brief Triangulates 3D points into tetrahedra; the flow test is CGAL's exact
+  * side_of_bounded_sphere on each facet's diametral sphere. Returns false with \a error when
+  * the points do not span space (fewer than 4, collinear or coplanar). Points must be distinct. */
+bool
+triangulate3D (const std::vector<Eigen::Vector3d>& points,
+               std::vector<FlowCell>& cells, std::string& error);
+
+} // namespace core
+} // namespace pcl_flowseg

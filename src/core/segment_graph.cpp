@@ -1,0 +1,212 @@
+/*
+ * pcl_flowseg - internal: statistics of cell sets, saddles between them, and rho-merging.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "segment_graph.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+
+namespace pcl_flowseg {
+namespace core {
+
+double
+facetSquaredRadius (const std::vector<Eigen::Vector3d>& vertices, const FlowCell& cell,
+                    int facet, int dimension, Eigen::Vector3d* centre)
+{
+  const int facets = dimension + 1;
+  const Eigen::Vector3d& a = vertices[static_cast<std::size_t> (cell.vertices[(facet + 1) % facets])];
+  const Eigen::Vector3d& b = vertices[static_cast<std::size_t> (cell.vertices[(facet + 2) % facets])];
+  if (dimension == 2)
+  {
+    if (centre)
+      *centre = 0.5 * (a + b);
+    return 0.25 * (b - a).squaredNorm ();
+  }
+  const Eigen::Vector3d& c = vertices[static_cast<std::size_t> (cell.vertices[(facet + 3) % facets])];
+  const Eigen::Vector3d u = b - a, v = c - a;
+  const Eigen::Vector3d w = u.cross (v);
+  const double w2 = w.squaredNorm ();
+  if (!(w2 > 0.0))
+  {
+    // Cannot happen for a facet of a valid triangulation; fall back to the longest edge.
+    const double e = std::max ({u.squaredNorm (), v.squaredNorm (), (c - b).squaredNorm ()});
+    if (centre)
+      *centre = (a + b + c) / 3.0;
+    return 0.25 * e;
+  }
+  const Eigen::Vector3d offset = (u.squaredNorm () * v.cross (w) + v.squaredNorm () * w.cross (u)) / (2.0 * w2);
+  if (centre)
+    *centre = a + offset;
+  return offset.squaredNorm ();
+}
+
+std::vector<FlowSegment>
+summariseCells (const std::vector<FlowCell>& cells, const std::vector<int>& group_of_cell,
+                int group_count)
+{
+  std::vector<FlowSegment> groups (static_cast<std::size_t> (group_count));
+  std::vector<Eigen::Vector3d> weighted (groups.size (), Eigen::Vector3d::Zero ());
+  for (std::size_t c = 0; c < cells.size (); ++c)
+  {
+    const std::size_t g = static_cast<std::size_t> (group_of_cell[c]);
+    groups[g].volume += cells[c].volume;
+    groups[g].cell_count += 1;
+    weighted[g] += cells[c].volume * cells[c].centroid;
+  }
+  for (std::size_t g = 0; g < groups.size (); ++g)
+    groups[g].centroid = groups[g].volume > 0.0 ? Eigen::Vector3d (weighted[g] / groups[g].volume)
+                                                : Eigen::Vector3d::Zero ();
+  return groups;
+}
+
+std::vector<SaddleFacet>
+highestSharedFacets (const FlowResult& result, const std::vector<int>& group_of_cell)
+{
+  const int facets = result.dimension + 1;
+  std::unordered_map<std::uint64_t, SaddleFacet> best;
+  for (std::size_t c = 0; c < result.cells.size (); ++c)
+  {
+    const FlowCell& cell = result.cells[c];
+    for (int i = 0; i < facets; ++i)
+    {
+      const int nb = cell.neighbors[i];
+      if (nb == kInfiniteCell || static_cast<std::size_t> (nb) < c)
+        continue; // hull facet, or seen from the other side
+      int ga = group_of_cell[c], gb = group_of_cell[static_cast<std::size_t> (nb)];
+      if (ga == gb)
+        continue;
+      if (ga > gb)
+        std::swap (ga, gb);
+      Eigen::Vector3d centre;
+      const double r2 = facetSquaredRadius (result.vertices, cell, i, result.dimension, &centre);
+      const std::uint64_t key = (static_cast<std::uint64_t> (ga) << 32) | static_cast<std::uint32_t> (gb);
+      auto it = best.find (key);
+      if (it != best.end () && it->second.squared_radius >= r2)
+        continue;
+      SaddleFacet s;
+      s.segment_a = ga;
+      s.segment_b = gb;
+      s.cell = static_cast<int> (c);
+      s.facet = i;
+      for (int k = 0; k < facets - 1; ++k)
+        s.vertices[static_cast<std::size_t> (k)] = cell.vertices[(i + 1 + k) % facets];
+      s.squared_radius = r2;
+      s.location = centre;
+      best[key] = s;
+    }
+  }
+  std::vector<SaddleFacet> out;
+  out.reserve (best.size ());
+  for (auto& kv : best)
+    out.push_back (kv.second);
+  std::sort (out.begin (), out.end (), [] (const SaddleFacet& x, const SaddleFacet& y) {
+    return x.segment_a != y.segment_a ? x.segment_a < y.segment_a : x.segment_b < y.segment_b;
+  });
+  return out;
+}
+
+namespace {
+int
+findRoot (std::vector<int>& parent, int x)
+{
+  while (parent[static_cast<std::size_t> (x)] != x)
+  {
+    parent[static_cast<std::size_t> (x)] = parent[static_cast<std::size_t> (parent[static_cast<std::size_t> (x)])];
+    x = parent[static_cast<std::size_t> (x)];
+  }
+  return x;
+}
+} // namespace
+
+void
+mergeManifolds (double rho, FlowResult& result)
+{
+  const int m = static_cast<int> (result.manifolds.size ());
+  std::vector<int> parent (static_cast<std::size_t> (m));
+  std::iota (parent.begin (), parent.end (), 0);
+  const double rho2 = rho * rho;
+
+  for (const SaddleFacet& s : result.manifold_adjacency)
+  {
+    const FlowSegment& a = result.manifolds[static_cast<std::size_t> (s.segment_a)];
+    const FlowSegment& b = result.manifolds[static_cast<std::size_t> (s.segment_b)];
+    if (a.flows_to_infinity || b.flows_to_infinity)
+      continue;
+    const double limit = rho2 * s.squared_radius;
+    if (a.maximum.height < limit && b.maximum.height < limit)
+    {
+      const int ra = findRoot (parent, s.segment_a), rb = findRoot (parent, s.segment_b);
+      if (ra != rb)
+        parent[static_cast<std::size_t> (std::max (ra, rb))] = std::min (ra, rb);
+    }
+  }
+
+  // Components -> provisional ids, then statistics, then the final order.
+  std::vector<int> component (static_cast<std::size_t> (m), -1);
+  int count = 0;
+  for (int k = 0; k < m; ++k)
+  {
+    const int r = findRoot (parent, k);
+    if (component[static_cast<std::size_t> (r)] < 0)
+      component[static_cast<std::size_t> (r)] = count++;
+    component[static_cast<std::size_t> (k)] = component[static_cast<std::size_t> (r)];
+  }
+  std::vector<int> provisional (result.cells.size ());
+  for (std::size_t c = 0; c < result.cells.size (); ++c)
+    provisional[c] = component[static_cast<std::size_t> (result.cells[c].manifold)];
+  std::vector<FlowSegment> segs = summariseCells (result.cells, provisional, count);
+  for (int k = 0; k < m; ++k)
+  {
+    const FlowSegment& man = result.manifolds[static_cast<std::size_t> (k)];
+    FlowSegment& seg = segs[static_cast<std::size_t> (component[static_cast<std::size_t> (k)])];
+    if (man.flows_to_infinity)
+    {
+      seg.flows_to_infinity = true;
+      seg.maximum = man.maximum;
+      continue;
+    }
+    seg.maxima.insert (seg.maxima.end (), man.maxima.begin (), man.maxima.end ());
+    if (seg.maxima.size () == man.maxima.size () || man.maximum.height > seg.maximum.height)
+      seg.maximum = man.maximum;
+  }
+
+  // Finite segments by decreasing volume (then height), the one at infinity last.
+  std::vector<int> order (static_cast<std::size_t> (count));
+  std::iota (order.begin (), order.end (), 0);
+  std::sort (order.begin (), order.end (), [&] (int x, int y) {
+    const FlowSegment& a = segs[static_cast<std::size_t> (x)];
+    const FlowSegment& b = segs[static_cast<std::size_t> (y)];
+    if (a.flows_to_infinity != b.flows_to_infinity)
+      return b.flows_to_infinity;
+    if (a.volume != b.volume)
+      return a.volume > b.volume;
+    if (a.maximum.height != b.maximum.height)
+      return a.maximum.height > b.maximum.height;
+    return x < y;
+  });
+  std::vector<int> rank (static_cast<std::size_t> (count));
+  result.segments.clear ();
+  result.segments.reserve (static_cast<std::size_t> (count));
+  for (int r = 0; r < count; ++r)
+  {
+    rank[static_cast<std::size_t> (order[static_cast<std::size_t> (r)])] = r;
+    result.segments.push_back (segs[static_cast<std::size_t> (order[static_cast<std::size_t> (r)])]);
+    std::sort (result.segments.back ().maxima.begin (), result.segments.back ().maxima.end ());
+  }
+  std::vector<int> segment_of_cell (result.cells.size ());
+  for (std::size_t c = 0; c < result.cells.size (); ++c)
+  {
+    result.cells[c].segment = rank[static_cast<std::size_t> (provisional[c])];
+    segment_of_cell[c] = result.cells[c].segment;
+  }
+  result.segment_adjacency = highestSharedFacets (result, segment_of_cell);
+}
+
+} // namespace core
+} // namespace pcl_flowseg

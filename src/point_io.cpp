@@ -1,0 +1,251 @@
+/*
+ * pcl_flowseg - reading point samples from the file formats the apps accept.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/point_io.h>
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/conversions.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace pcl_flowseg {
+
+namespace {
+
+std::string
+lowerExtension (const std::string& path)
+{
+  const std::size_t slash = path.find_last_of ("/\\");
+  const std::size_t dot = path.find_last_of ('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  std::string ext = path.substr (dot + 1);
+  std::transform (ext.begin (), ext.end (), ext.begin (), [] (unsigned char c) { return std::tolower (c); });
+  return ext;
+}
+
+/** Splits a line into numbers (white space or commas); false when a token is not a number. */
+bool
+parseNumbers (const std::string& line, std::vector<double>& values)
+{
+  values.clear ();
+  const char* s = line.c_str ();
+  while (*s)
+  {
+    while (*s && (std::isspace (static_cast<unsigned char> (*s)) || *s == ','))
+      ++s;
+    if (!*s)
+      break;
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod (s, &end);
+    if (end == s || (*end && !std::isspace (static_cast<unsigned char> (*end)) && *end != ','))
+      return false;
+    values.push_back (v);
+    s = end;
+  }
+  return true;
+}
+
+std::string
+stripComment (const std::string& line)
+{
+  const std::size_t hash = line.find ('#');
+  return hash == std::string::npos ? line : line.substr (0, hash);
+}
+
+std::string
+where (const std::string& path, std::size_t line)
+{
+  return path + ":" + std::to_string (line) + ": ";
+}
+
+Status
+loadText (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  std::string line;
+  std::vector<double> v;
+  std::size_t number = 0, columns = 0;
+  while (std::getline (in, line))
+  {
+    ++number;
+    const std::string body = stripComment (line);
+    if (!parseNumbers (body, v))
+      return Status::error (where (path, number) + "not a list of numbers: '" + line.substr (0, 80) + "'");
+    if (v.empty ())
+      continue;
+    if (v.size () < 2)
+      return Status::error (where (path, number) + "expected at least 2 coordinates (x y [z])");
+    if (columns == 0)
+      columns = v.size ();
+    else if (v.size () != columns)
+      return Status::error (where (path, number) + "has " + std::to_string (v.size ()) + " columns, earlier lines " +
+                            std::to_string (columns));
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (v[0]), static_cast<float> (v[1]),
+                                    v.size () > 2 ? static_cast<float> (v[2]) : 0.0f));
+  }
+  if (in.bad ())
+    return Status::error (path + ": read error");
+  return Status::success ();
+}
+
+/** Next line that is not empty or a comment; false at the end. */
+bool
+nextContentLine (std::istream& in, std::string& body, std::size_t& number)
+{
+  std::string line;
+  while (std::getline (in, line))
+  {
+    ++number;
+    body = stripComment (line);
+    if (body.find_first_not_of (" \t\r") != std::string::npos)
+      return true;
+  }
+  return false;
+}
+
+Status
+loadOff (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  std::size_t number = 0;
+  std::string body;
+  if (!nextContentLine (in, body, number))
+    return Status::error (path + ": empty file");
+  std::istringstream header (body);
+  std::string magic;
+  header >> magic;
+  if (magic.size () < 3 || magic.compare (magic.size () - 3, 3, "OFF") != 0)
+    return Status::error (where (path, number) + "not an OFF file (no OFF header)");
+  if (magic != "OFF" && magic != "COFF" && magic != "NOFF" && magic != "CNOFF")
+    return Status::error (where (path, number) + "unsupported OFF variant '" + magic + "'");
+  std::vector<double> counts;
+  std::string rest;
+  std::getline (header, rest);
+  if (!parseNumbers (rest, counts) || counts.empty ())
+  {
+    if (!nextContentLine (in, body, number) || !parseNumbers (body, counts))
+      return Status::error (where (path, number) + "missing vertex/face counts");
+  }
+  if (counts.empty () || counts[0] < 0 || counts[0] > 1e9 || counts[0] != static_cast<double> (static_cast<long long> (counts[0])))
+    return Status::error (where (path, number) + "invalid vertex count");
+  const std::size_t n = static_cast<std::size_t> (counts[0]);
+  cloud.reserve (n);
+  std::vector<double> v;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    if (!nextContentLine (in, body, number))
+      return Status::error (path + ": file ends after " + std::to_string (k) + " of " + std::to_string (n) + " vertices");
+    if (!parseNumbers (body, v) || v.size () < 3)
+      return Status::error (where (path, number) + "expected a vertex 'x y z'");
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (v[0]), static_cast<float> (v[1]), static_cast<float> (v[2])));
+  }
+  return Status::success ();
+}
+
+Status
+loadObj (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  std::string line;
+  std::vector<double> v;
+  std::size_t number = 0;
+  while (std::getline (in, line))
+  {
+    ++number;
+    if (line.size () < 2 || line[0] != 'v' || !std::isspace (static_cast<unsigned char> (line[1])))
+      continue; // faces, normals, texture coordinates, groups...
+    if (!parseNumbers (stripComment (line.substr (2)), v) || v.size () < 3)
+      return Status::error (where (path, number) + "expected a vertex 'v x y z'");
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (v[0]), static_cast<float> (v[1]), static_cast<float> (v[2])));
+  }
+  return Status::success ();
+}
+
+Status
+loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  pcl::PCLPointCloud2 blob;
+  const int rc = pcd ? pcl::io::loadPCDFile (path, blob) : pcl::io::loadPLYFile (path, blob);
+  if (rc < 0)
+    return Status::error (path + ": not a readable " + std::string (pcd ? "PCD" : "PLY") + " file");
+  bool has_x = false, has_y = false, has_z = false;
+  for (const auto& f : blob.fields)
+  {
+    has_x |= f.name == "x";
+    has_y |= f.name == "y";
+    has_z |= f.name == "z";
+  }
+  if (!has_x || !has_y)
+    return Status::error (path + ": has no x/y fields (not a point cloud)");
+  if (!has_z)
+  {
+    // Add a zero z so that the conversion is complete (2D data).
+    pcl::PointCloud<pcl::PointXY> xy;
+    pcl::fromPCLPointCloud2 (blob, xy);
+    for (const auto& p : xy)
+      cloud.push_back (pcl::PointXYZ (p.x, p.y, 0.0f));
+  }
+  else
+    pcl::fromPCLPointCloud2 (blob, cloud);
+  return Status::success ();
+}
+
+} // namespace
+
+bool
+isSupportedPointFile (const std::string& path)
+{
+  const std::string ext = lowerExtension (path);
+  return ext == "pcd" || ext == "ply" || ext == "xyz" || ext == "txt" || ext == "csv" || ext == "off" || ext == "obj";
+}
+
+Status
+loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  cloud.clear ();
+  const std::string ext = lowerExtension (path);
+  if (!isSupportedPointFile (path))
+    return Status::error (path + ": unknown file type '." + ext +
+                          "' (expected .pcd, .ply, .xyz, .txt, .csv, .off or .obj)");
+  std::ifstream in (path, std::ios::binary);
+  if (!in)
+    return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
+
+  Status status;
+  if (ext == "pcd" || ext == "ply")
+  {
+    in.close ();
+    status = loadWithPcl (path, ext == "pcd", cloud);
+  }
+  else if (ext == "off")
+    status = loadOff (path, in, cloud);
+  else if (ext == "obj")
+    status = loadObj (path, in, cloud);
+  else
+    status = loadText (path, in, cloud);
+
+  if (!status.ok)
+  {
+    cloud.clear ();
+    return status;
+  }
+  if (cloud.empty ())
+    return Status::error (path + ": contains no points");
+  cloud.width = static_cast<std::uint32_t> (cloud.size ());
+  cloud.height = 1;
+  cloud.is_dense = std::all_of (cloud.begin (), cloud.end (), [] (const pcl::PointXYZ& p) {
+    return std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z);
+  });
+  return Status::success ();
+}
+
+} // namespace pcl_flowseg

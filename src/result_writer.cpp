@@ -1,0 +1,230 @@
+/*
+ * pcl_flowseg - writing segmentation results: labelled PCD, JSON summary, coloured PLY.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/result_writer.h>
+
+#include "atomic_file.h"
+
+#include <pcl/io/pcd_io.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace pcl_flowseg {
+
+namespace {
+
+/** Number as JSON: non-finite values become null. */
+std::string
+num (double v)
+{
+  if (!std::isfinite (v))
+    return "null";
+  std::ostringstream s;
+  s << std::setprecision (10) << v;
+  return s.str ();
+}
+
+std::string
+vec (const Eigen::Vector3d& v, int dimension)
+{
+  std::string s = "[" + num (v.x ()) + ", " + num (v.y ());
+  if (dimension != 2 || v.z () != 0.0)
+    s += ", " + num (v.z ());
+  return s + "]";
+}
+
+std::string
+quoted (const std::string& text)
+{
+  std::string s = "\"";
+  for (const char c : text)
+  {
+    switch (c)
+    {
+      case '"': s += "\\\""; break;
+      case '\\': s += "\\\\"; break;
+      case '\n': s += "\\n"; break;
+      case '\t': s += "\\t"; break;
+      default:
+        if (static_cast<unsigned char> (c) < 0x20)
+        {
+          char buf[8];
+          std::snprintf (buf, sizeof (buf), "\\u%04x", c);
+          s += buf;
+        }
+        else
+          s += c;
+    }
+  }
+  return s + "\"";
+}
+
+Status
+finish (std::ofstream& out)
+{
+  out.flush ();
+  return out.good () ? Status::success () : Status::error ("write failed (disk full?)");
+}
+
+} // namespace
+
+std::array<std::uint8_t, 3>
+segmentColour (std::uint32_t id, bool infinity)
+{
+  if (id == kNoSegment || infinity)
+    return {{160, 160, 160}};
+  const double h = std::fmod (0.13 + 0.618033988749895 * id, 1.0) * 6.0;
+  const double s = 0.75, v = 0.95;
+  const int sector = static_cast<int> (h);
+  const double f = h - sector, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+  double r, g, b;
+  switch (sector % 6)
+  {
+    case 0: r = v; g = t; b = p; break;
+    case 1: r = q; g = v; b = p; break;
+    case 2: r = p; g = v; b = t; break;
+    case 3: r = p; g = q; b = v; break;
+    case 4: r = t; g = p; b = v; break;
+    default: r = v; g = p; b = q; break;
+  }
+  return {{static_cast<std::uint8_t> (r * 255), static_cast<std::uint8_t> (g * 255), static_cast<std::uint8_t> (b * 255)}};
+}
+
+Status
+writeLabelCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZL>& labels, bool binary)
+{
+  return writeFileAtomically (path, [&] (const std::string& tmp) {
+    pcl::PCDWriter writer;
+    const int rc = binary ? writer.writeBinary (tmp, labels) : writer.writeASCII (tmp, labels, 8);
+    return rc == 0 ? Status::success () : Status::error ("PCD writer failed");
+  });
+}
+
+Status
+writePointCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZ>& cloud, bool binary)
+{
+  return writeFileAtomically (path, [&] (const std::string& tmp) {
+    pcl::PCDWriter writer;
+    const int rc = binary ? writer.writeBinary (tmp, cloud) : writer.writeASCII (tmp, cloud, 7);
+    return rc == 0 ? Status::success () : Status::error ("PCD writer failed");
+  });
+}
+
+Status
+writeSegmentationJson (const std::string& path, const FlowResult& r, const RunInfo& info)
+{
+  return writeFileAtomically (path, [&] (const std::string& tmp) {
+    std::ofstream out (tmp);
+    if (!out)
+      return Status::error ("cannot create file");
+    const int d = r.dimension;
+    out << "{\n";
+    out << "  \"input\": " << quoted (info.input) << ",\n";
+    out << "  \"dimension\": " << d << ",\n";
+    out << "  \"rho\": " << num (info.rho) << ",\n";
+    out << "  \"points\": " << r.input_points << ",\n";
+    out << "  \"non_finite_points\": " << r.non_finite_points << ",\n";
+    out << "  \"duplicate_points\": " << r.duplicate_points << ",\n";
+    out << "  \"vertices\": " << r.vertices.size () << ",\n";
+    out << "  \"cells\": " << r.cells.size () << ",\n";
+    out << "  \"maxima\": " << r.maxima.size () << ",\n";
+    out << "  \"stable_manifolds\": " << r.manifolds.size () << ",\n";
+    out << "  \"segment_count\": " << r.segments.size () << ",\n";
+    out << "  \"segments\": [";
+    for (std::size_t k = 0; k < r.segments.size (); ++k)
+    {
+      const FlowSegment& s = r.segments[k];
+      out << (k ? ",\n" : "\n") << "    {\"id\": " << k << ", \"flows_to_infinity\": " << (s.flows_to_infinity ? "true" : "false")
+          << ", \"volume\": " << num (s.volume) << ", \"centroid\": " << vec (s.centroid, d)
+          << ", \"point_count\": " << s.point_count << ", \"cell_count\": " << s.cell_count
+          << ", \"maxima_merged\": " << s.maxima.size () << ", \"maximum_height\": " << num (s.maximum.height);
+      if (!s.flows_to_infinity)
+        out << ", \"maximum_location\": " << vec (s.maximum.location, d);
+      out << "}";
+    }
+    out << "\n  ],\n";
+    out << "  \"adjacency\": [";
+    for (std::size_t k = 0; k < r.segment_adjacency.size (); ++k)
+    {
+      const SaddleFacet& s = r.segment_adjacency[k];
+      out << (k ? ",\n" : "\n") << "    {\"a\": " << s.segment_a << ", \"b\": " << s.segment_b
+          << ", \"saddle_height\": " << num (s.squared_radius) << ", \"saddle_location\": " << vec (s.location, d) << "}";
+    }
+    out << "\n  ],\n";
+    const StageTimings& t = r.timings;
+    out << "  \"timings_ms\": {\"read\": " << num (info.read_ms) << ", \"preparation\": " << num (t.preparation_ms)
+        << ", \"delaunay\": " << num (t.delaunay_ms) << ", \"flow\": " << num (t.flow_ms) << ", \"merge\": " << num (t.merge_ms)
+        << ", \"labels\": " << num (t.labels_ms) << ", \"total\": " << num (t.total_ms) << "},\n";
+    out << "  \"warnings\": [";
+    for (std::size_t k = 0; k < r.warnings.size (); ++k)
+      out << (k ? ", " : "") << quoted (r.warnings[k]);
+    out << "]\n}\n";
+    return finish (out);
+  });
+}
+
+Status
+writeSegmentationPly (const std::string& path, const FlowResult& r, const pcl::PointCloud<pcl::PointXYZL>& labels)
+{
+  return writeFileAtomically (path, [&] (const std::string& tmp) {
+    std::ofstream out (tmp, std::ios::binary);
+    if (!out)
+      return Status::error ("cannot create file");
+    auto isInfinity = [&] (std::uint32_t l) { return l != kNoSegment && l < r.segments.size () && r.segments[l].flows_to_infinity; };
+    const bool faces = r.dimension == 2;
+    // Points with non-finite coordinates cannot be drawn: they are left out of the PLY (and
+    // counted in the JSON summary); faces index the first written copy of each vertex.
+    std::vector<int> written (labels.size (), -1);
+    std::vector<int> vertex_point (r.vertices.size (), -1);
+    int count = 0;
+    for (std::size_t i = 0; i < labels.size (); ++i)
+    {
+      const auto& p = labels[i];
+      if (!std::isfinite (p.x) || !std::isfinite (p.y) || !std::isfinite (p.z))
+        continue;
+      written[i] = count++;
+      const int v = i < r.point_to_vertex.size () ? r.point_to_vertex[i] : -1;
+      if (v >= 0 && vertex_point[static_cast<std::size_t> (v)] < 0)
+        vertex_point[static_cast<std::size_t> (v)] = written[i];
+    }
+    out << "ply\nformat ascii 1.0\ncomment pcl_flowseg segmentation: colour = segment, grey = flows to infinity\n";
+    out << "element vertex " << count << "\n";
+    out << "property float x\nproperty float y\nproperty float z\n";
+    out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+    if (faces)
+    {
+      out << "element face " << r.cells.size () << "\n";
+      out << "property list uchar int vertex_indices\n";
+      out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+    }
+    out << "end_header\n";
+    out << std::setprecision (9);
+    for (std::size_t i = 0; i < labels.size (); ++i)
+    {
+      if (written[i] < 0)
+        continue;
+      const auto& p = labels[i];
+      const auto c = segmentColour (p.label, isInfinity (p.label));
+      out << p.x << " " << p.y << " " << p.z << " " << int (c[0]) << " " << int (c[1]) << " " << int (c[2]) << "\n";
+    }
+    if (faces)
+    {
+      for (const FlowCell& cell : r.cells)
+      {
+        const std::uint32_t s = static_cast<std::uint32_t> (cell.segment);
+        const auto c = segmentColour (s, r.segments[s].flows_to_infinity);
+        out << "3";
+        for (int k = 0; k < 3; ++k)
+          out << " " << vertex_point[static_cast<std::size_t> (cell.vertices[k])];
+        out << " " << int (c[0]) << " " << int (c[1]) << " " << int (c[2]) << "\n";
+      }
+    }
+    return finish (out);
+  });
+}
+
+} // namespace pcl_flowseg
