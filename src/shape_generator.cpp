@@ -66,6 +66,15 @@ rotationY (double degrees)
 
 } // namespace
 
+double
+BlobShape::level (const Eigen::Vector3d& p) const
+{
+  double best = std::numeric_limits<double>::infinity ();
+  for (const auto& e : parts)
+    best = std::min (best, std::sqrt (normalisedSquared (e, p, dimension)));
+  return best;
+}
+
 bool
 BlobShape::contains (const Eigen::Vector3d& p) const
 {

@@ -29,6 +29,8 @@ struct BlobShape
   int dimension = 3;
   std::vector<EllipsoidPart> parts;
 
+  /** Smallest normalised radius of \a p over the parts: < 1 inside, 1 on the boundary. */
+  double level (const Eigen::Vector3d& p) const;
   /** True when \a p lies strictly inside at least one part. */
   bool contains (const Eigen::Vector3d& p) const;
   /** Index of the part whose normalised distance to \a p is smallest (the part \a p belongs to). */

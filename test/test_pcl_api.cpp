@@ -1,0 +1,153 @@
+/*
+ * pcl::FlowSegmentation as a PCL user sees it: clouds, indices, labels, errors.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "test_support.h"
+
+#include <pcl_flowseg/flow_segmentation.h>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using flowseg_test::shapeSample;
+
+namespace {
+template <typename PointT>
+typename pcl::PointCloud<PointT>::Ptr
+makeCloud (const std::vector<Eigen::Vector3d>& pts)
+{
+  typename pcl::PointCloud<PointT>::Ptr cloud (new pcl::PointCloud<PointT>);
+  for (const auto& p : pts)
+  {
+    PointT q;
+    q.x = static_cast<float> (p.x ());
+    q.y = static_cast<float> (p.y ());
+    q.z = static_cast<float> (p.z ());
+    cloud->push_back (q);
+  }
+  return cloud;
+}
+} // namespace
+
+template <typename PointT>
+class FlowSegmentationTyped : public ::testing::Test {};
+using PointTypes = ::testing::Types<pcl::PointXYZ, pcl::PointXYZRGB, pcl::PointNormal>;
+TYPED_TEST_SUITE (FlowSegmentationTyped, PointTypes);
+
+TYPED_TEST (FlowSegmentationTyped, SegmentsCoverEveryPointOnce)
+{
+  auto cloud = makeCloud<TypeParam> (shapeSample ("dumbbell3d", 2000));
+  typename pcl::FlowSegmentation<TypeParam>::Ptr seg (new pcl::FlowSegmentation<TypeParam>);
+  seg->setInputCloud (cloud);
+  EXPECT_EQ (seg->getRho (), pcl_flowseg::kDefaultRho);
+  std::vector<pcl::PointIndices> segments;
+  ASSERT_TRUE (seg->segment (segments)) << seg->getLastError ();
+  EXPECT_TRUE (seg->getLastError ().empty ());
+  ASSERT_EQ (segments.size (), seg->getResult ().segments.size ());
+  std::vector<int> seen (cloud->size (), 0);
+  for (std::size_t k = 0; k < segments.size (); ++k)
+  {
+    EXPECT_EQ (segments[k].indices.size (), seg->getResult ().segments[k].point_count);
+    for (const auto i : segments[k].indices)
+      ++seen[static_cast<std::size_t> (i)];
+  }
+  for (int s : seen)
+    EXPECT_EQ (s, 1);
+  pcl::PointCloud<pcl::PointXYZL> labels;
+  seg->getLabelCloud (labels);
+  ASSERT_EQ (labels.size (), cloud->size ());
+  for (std::size_t k = 0; k < segments.size (); ++k)
+    for (const auto i : segments[k].indices)
+    {
+      EXPECT_EQ (labels[static_cast<std::size_t> (i)].label, k);
+      EXPECT_EQ (labels[static_cast<std::size_t> (i)].x, (*cloud)[static_cast<std::size_t> (i)].x);
+    }
+  const auto& t = seg->getTimings ();
+  EXPECT_GT (t.delaunay_ms, 0.0);
+  EXPECT_GE (t.total_ms, t.delaunay_ms + t.flow_ms + t.merge_ms);
+}
+
+TEST (FlowSegmentation, IndicesRestrictTheInput)
+{
+  auto cloud = makeCloud<pcl::PointXYZ> (shapeSample ("dumbbell3d", 2000));
+  pcl::IndicesPtr indices (new pcl::Indices);
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+    if ((*cloud)[i].x < 0.5f)
+      indices->push_back (static_cast<pcl::index_t> (i));
+  pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  seg.setIndices (indices);
+  std::vector<pcl::PointIndices> segments;
+  ASSERT_TRUE (seg.segment (segments)) << seg.getLastError ();
+  EXPECT_EQ (seg.getResult ().input_points, indices->size ());
+  std::size_t total = 0;
+  for (const auto& s : segments)
+    for (const auto i : s.indices)
+    {
+      EXPECT_LT ((*cloud)[static_cast<std::size_t> (i)].x, 0.5f);
+      ++total;
+    }
+  EXPECT_EQ (total, indices->size ());
+  pcl::PointCloud<pcl::PointXYZL> labels;
+  seg.getLabelCloud (labels);
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+    EXPECT_EQ (labels[i].label == pcl_flowseg::kNoSegment, (*cloud)[i].x >= 0.5f);
+}
+
+TEST (FlowSegmentation, ErrorsAreReportedNotThrown)
+{
+  pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  std::vector<pcl::PointIndices> segments (3);
+  EXPECT_FALSE (seg.segment (segments));
+  EXPECT_TRUE (segments.empty ());
+  EXPECT_FALSE (seg.getLastError ().empty ());
+
+  auto tiny = makeCloud<pcl::PointXYZ> ({Eigen::Vector3d (0, 0, 0), Eigen::Vector3d (1, 0, 0)});
+  seg.setInputCloud (tiny);
+  EXPECT_FALSE (seg.segment (segments));
+  EXPECT_NE (seg.getLastError ().find ("at least"), std::string::npos) << seg.getLastError ();
+
+  seg.setInputCloud (makeCloud<pcl::PointXYZ> (shapeSample ("hand2d", 300)));
+  seg.setRho (-1.0);
+  EXPECT_FALSE (seg.segment (segments));
+  EXPECT_NE (seg.getLastError ().find ("rho"), std::string::npos);
+  seg.setRho (1.5);
+  seg.setDimension (7);
+  EXPECT_FALSE (seg.segment (segments));
+  EXPECT_NE (seg.getLastError ().find ("dimension"), std::string::npos);
+  seg.setDimension (0);
+  EXPECT_TRUE (seg.segment (segments));
+  EXPECT_EQ (seg.getResult ().dimension, 2);
+}
+
+TEST (FlowSegmentation, RemergeEqualsAFreshRun)
+{
+  auto cloud = makeCloud<pcl::PointXYZ> (shapeSample ("animal3d", 2500));
+  pcl::FlowSegmentation<pcl::PointXYZ> a, b;
+  a.setInputCloud (cloud);
+  b.setInputCloud (cloud);
+  b.setRho (2.0);
+  std::vector<pcl::PointIndices> sa, sb;
+  ASSERT_TRUE (a.segment (sa));
+  ASSERT_TRUE (b.segment (sb));
+  ASSERT_TRUE (a.remerge (2.0, sa));
+  EXPECT_EQ (a.getRho (), 2.0);
+  ASSERT_EQ (sa.size (), sb.size ());
+  for (std::size_t k = 0; k < sa.size (); ++k)
+    EXPECT_EQ (sa[k].indices, sb[k].indices);
+}
+
+TEST (FlowSegmentation, ProgressIsReportedInOrder)
+{
+  pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (makeCloud<pcl::PointXYZ> (shapeSample ("star2d", 300)));
+  std::vector<double> fractions;
+  seg.setProgressCallback ([&] (const std::string&, double f) { fractions.push_back (f); });
+  std::vector<pcl::PointIndices> segments;
+  ASSERT_TRUE (seg.segment (segments));
+  ASSERT_GE (fractions.size (), 3u);
+  EXPECT_EQ (fractions.front (), 0.0);
+  EXPECT_EQ (fractions.back (), 1.0);
+  EXPECT_TRUE (std::is_sorted (fractions.begin (), fractions.end ()));
+}

@@ -1,0 +1,122 @@
+/*
+ * Segmentations of generated shapes with known parts.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+
+using namespace pcl_flowseg;
+using flowseg_test::segmentOrDie;
+using flowseg_test::shapeSample;
+using V = Eigen::Vector3d;
+
+namespace {
+
+/** Barycentric containment test of \a p in a cell (brute force over all cells). */
+int
+cellContaining (const FlowResult& r, const V& p)
+{
+  const int d = r.dimension;
+  for (std::size_t c = 0; c < r.cells.size (); ++c)
+  {
+    const auto& cell = r.cells[c];
+    const V o = r.vertices[static_cast<std::size_t> (cell.vertices[0])];
+    if (d == 2)
+    {
+      Eigen::Matrix2d m;
+      for (int k = 1; k < 3; ++k)
+        m.col (k - 1) = (r.vertices[static_cast<std::size_t> (cell.vertices[k])] - o).head<2> ();
+      const Eigen::Vector2d b = m.partialPivLu ().solve ((p - o).head<2> ());
+      if (b.minCoeff () >= 0 && b.sum () <= 1)
+        return static_cast<int> (c);
+    }
+    else
+    {
+      Eigen::Matrix3d m;
+      for (int k = 1; k < 4; ++k)
+        m.col (k - 1) = r.vertices[static_cast<std::size_t> (cell.vertices[k])] - o;
+      const V b = m.partialPivLu ().solve (p - o);
+      if (b.minCoeff () >= 0 && b.sum () <= 1)
+        return static_cast<int> (c);
+    }
+  }
+  return -1;
+}
+
+/** Share of the volume of cells with centroids within \a radius of \a centre held by \a segment. */
+double
+shareOfBall (const FlowResult& r, const V& centre, double radius, int segment)
+{
+  double in = 0, total = 0;
+  for (const auto& c : r.cells)
+    if ((c.centroid - centre).norm () < radius)
+    {
+      total += c.volume;
+      if (c.segment == segment)
+        in += c.volume;
+    }
+  return total > 0 ? in / total : 0.0;
+}
+
+} // namespace
+
+class Dumbbell : public ::testing::TestWithParam<const char*> {};
+
+TEST_P (Dumbbell, DefaultRhoSeparatesTheTwoBulbs)
+{
+  const std::string name = GetParam ();
+  const FlowResult r = segmentOrDie (shapeSample (name, name == "dumbbell2d" ? 1500 : 4000));
+  const V left (-2, 0, 0), right (2, 0, 0);
+  const int cl = cellContaining (r, left), cr = cellContaining (r, right);
+  ASSERT_GE (cl, 0);
+  ASSERT_GE (cr, 0);
+  const int sl = r.cells[static_cast<std::size_t> (cl)].segment, sr = r.cells[static_cast<std::size_t> (cr)].segment;
+  EXPECT_NE (sl, sr) << "the two bulbs merged into one segment";
+  EXPECT_FALSE (r.segments[static_cast<std::size_t> (sl)].flows_to_infinity);
+  EXPECT_FALSE (r.segments[static_cast<std::size_t> (sr)].flows_to_infinity);
+  // Each bulb's core belongs to its own segment.
+  EXPECT_GT (shareOfBall (r, left, 0.8, sl), 0.95);
+  EXPECT_GT (shareOfBall (r, right, 0.8, sr), 0.95);
+  // The segment maxima sit near the bulb centres (the medial axis point of each ball).
+  EXPECT_LT ((r.segments[static_cast<std::size_t> (sl)].maximum.location - left).norm (), 0.25);
+  EXPECT_LT ((r.segments[static_cast<std::size_t> (sr)].maximum.location - right).norm (), 0.25);
+}
+
+INSTANTIATE_TEST_SUITE_P (Shapes, Dumbbell, ::testing::Values ("dumbbell2d", "dumbbell3d"));
+
+TEST (Shapes, SnowmanBallsAreSeparateSegments)
+{
+  const BlobShape shape = sampleShape ("snowman3d");
+  const FlowResult r = segmentOrDie (sampleBoundary (shape, 4000, 3));
+  std::vector<int> seg;
+  for (const auto& part : shape.parts)
+  {
+    const int c = cellContaining (r, part.centre);
+    ASSERT_GE (c, 0);
+    seg.push_back (r.cells[static_cast<std::size_t> (c)].segment);
+  }
+  EXPECT_NE (seg[0], seg[1]);
+  EXPECT_NE (seg[1], seg[2]);
+  EXPECT_NE (seg[0], seg[2]);
+}
+
+TEST (Shapes, GeneratorSamplesLieOnTheBoundary)
+{
+  for (const auto& shape : sampleShapes ())
+  {
+    const auto pts = sampleBoundary (shape, 500, 1);
+    ASSERT_EQ (pts.size (), 500u) << shape.name;
+    for (const auto& p : pts)
+    {
+      EXPECT_NEAR (shape.level (p), 1.0, 1e-9) << shape.name;
+      if (shape.dimension == 2)
+        EXPECT_EQ (p.z (), 0.0);
+    }
+    // Reproducible for a seed, different for another.
+    EXPECT_EQ (sampleBoundary (shape, 50, 1), std::vector<V> (pts.begin (), pts.begin () + 50));
+    EXPECT_NE (sampleBoundary (shape, 50, 2), std::vector<V> (pts.begin (), pts.begin () + 50));
+  }
+}

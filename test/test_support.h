@@ -1,0 +1,94 @@
+/*
+ * pcl_flowseg tests - shared helpers.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/flow_core.h>
+#include <pcl_flowseg/shape_generator.h>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace flowseg_test {
+
+/** Boundary sample of one of the shipped procedural shapes. */
+inline std::vector<Eigen::Vector3d>
+shapeSample (const std::string& name, std::size_t count, std::uint32_t seed = 7)
+{
+  return pcl_flowseg::sampleBoundary (pcl_flowseg::sampleShape (name), count, seed);
+}
+
+/** Uniform random points in the unit square (z = 0) or cube. */
+inline std::vector<Eigen::Vector3d>
+randomPoints (std::size_t count, int dimension, std::uint32_t seed)
+{
+  std::mt19937 rng (seed);
+  std::uniform_real_distribution<double> u (-1.0, 1.0);
+  std::vector<Eigen::Vector3d> pts;
+  for (std::size_t i = 0; i < count; ++i)
+    pts.emplace_back (u (rng), u (rng), dimension == 3 ? u (rng) : 0.0);
+  return pts;
+}
+
+/** Runs the core and fails the calling test when it does not succeed. */
+inline pcl_flowseg::FlowResult
+segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = pcl_flowseg::kDefaultRho,
+              pcl_flowseg::DimensionMode mode = pcl_flowseg::DimensionMode::Automatic)
+{
+  pcl_flowseg::FlowParameters params;
+  params.rho = rho;
+  params.dimension = mode;
+  pcl_flowseg::FlowResult result;
+  const auto status = pcl_flowseg::runFlowSegmentation (pts, params, result);
+  if (!status.ok)
+  {
+    ADD_FAILURE () << "segmentation failed: " << status.message;
+  }
+  return result;
+}
+
+/** True when the two label vectors describe the same partition (labels may be renamed). */
+inline bool
+samePartition (const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b, std::string* why = nullptr)
+{
+  if (a.size () != b.size ())
+  {
+    if (why) *why = "sizes differ";
+    return false;
+  }
+  std::map<std::uint32_t, std::uint32_t> ab, ba;
+  for (std::size_t i = 0; i < a.size (); ++i)
+  {
+    auto x = ab.emplace (a[i], b[i]);
+    auto y = ba.emplace (b[i], a[i]);
+    if (x.first->second != b[i] || y.first->second != a[i])
+    {
+      if (why) *why = "point " + std::to_string (i) + " breaks the label correspondence";
+      return false;
+    }
+  }
+  return true;
+}
+
+/** Path of a file of ../shared/data, or "" when the shared folder is not beside the project. */
+inline std::string
+sharedDataPath (const std::string& relative)
+{
+  const char* env = std::getenv ("PCL_FLOWSEG_SHARED_DATA");
+  const std::string base = env ? env : std::string (PCL_FLOWSEG_SOURCE_DIR) + "/../shared/data";
+  const std::string path = base + "/" + relative;
+  FILE* f = std::fopen (path.c_str (), "rb");
+  if (!f)
+    return "";
+  std::fclose (f);
+  return path;
+}
+
+} // namespace flowseg_test
