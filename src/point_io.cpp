@@ -170,9 +170,105 @@ loadObj (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXY
   return Status::success ();
 }
 
+/** PCL's PCD reader does not survive every malformed header, so the header is checked first:
+  * known keywords only, consistent field lists, a sane point count, and enough bytes for
+  * binary data. */
+Status
+checkPcdHeader (const std::string& path)
+{
+  std::ifstream in (path, std::ios::binary);
+  std::string line;
+  std::size_t number = 0;
+  std::vector<std::string> fields, sizes, types, counts;
+  long long width = -1, height = 1, points = -1;
+  std::string data;
+  while (data.empty () && std::getline (in, line))
+  {
+    if (++number > 64 || line.size () > 4096)
+      return Status::error (path + ": not a PCD file (no DATA line in the header)");
+    if (!line.empty () && line.back () == '\r')
+      line.pop_back ();
+    if (line.empty () || line[0] == '#')
+      continue;
+    std::istringstream words (line);
+    std::string key;
+    words >> key;
+    std::vector<std::string> values;
+    for (std::string w; words >> w;)
+      values.push_back (w);
+    auto integer = [&] (long long& out) {
+      char* end = nullptr;
+      if (values.size () != 1)
+        return false;
+      out = std::strtoll (values[0].c_str (), &end, 10);
+      return *end == '\0' && out >= 0;
+    };
+    if (key == "VERSION" || key == "VIEWPOINT")
+      continue;
+    else if (key == "FIELDS") fields = values;
+    else if (key == "SIZE") sizes = values;
+    else if (key == "TYPE") types = values;
+    else if (key == "COUNT") counts = values;
+    else if (key == "WIDTH") { if (!integer (width)) return Status::error (where (path, number) + "invalid WIDTH"); }
+    else if (key == "HEIGHT") { if (!integer (height)) return Status::error (where (path, number) + "invalid HEIGHT"); }
+    else if (key == "POINTS") { if (!integer (points)) return Status::error (where (path, number) + "invalid POINTS"); }
+    else if (key == "DATA")
+    {
+      if (values.size () != 1 || (values[0] != "ascii" && values[0] != "binary" && values[0] != "binary_compressed"))
+        return Status::error (where (path, number) + "unknown DATA type");
+      data = values[0];
+    }
+    else
+      return Status::error (path + ": not a PCD file (unexpected '" + key.substr (0, 40) + "' at line " +
+                            std::to_string (number) + ")");
+  }
+  if (data.empty ())
+    return Status::error (path + ": not a PCD file (no DATA line in the header)");
+  if (fields.empty () || sizes.size () != fields.size () || types.size () != fields.size () ||
+      (!counts.empty () && counts.size () != fields.size ()))
+    return Status::error (path + ": malformed PCD header (FIELDS, SIZE, TYPE, COUNT disagree)");
+  if (points < 0)
+    points = width >= 0 ? width * height : -1;
+  if (points < 0 || points > 2000000000LL || (width >= 0 && width * height != points))
+    return Status::error (path + ": malformed PCD header (WIDTH x HEIGHT and POINTS disagree or are missing)");
+  long long point_bytes = 0;
+  for (std::size_t k = 0; k < fields.size (); ++k)
+  {
+    const std::string& size = sizes[k];
+    const std::string& type = types[k];
+    if ((size != "1" && size != "2" && size != "4" && size != "8") || (type != "I" && type != "U" && type != "F"))
+      return Status::error (path + ": malformed PCD header (field '" + fields[k] + "' has an invalid SIZE/TYPE)");
+    long long count = 1;
+    if (!counts.empty ())
+    {
+      char* end = nullptr;
+      count = std::strtoll (counts[k].c_str (), &end, 10);
+      if (*end != '\0' || count < 1 || count > 100000)
+        return Status::error (path + ": malformed PCD header (invalid COUNT)");
+    }
+    point_bytes += count * std::stoll (size);
+  }
+  if (data == "binary")
+  {
+    const std::streampos start = in.tellg ();
+    in.seekg (0, std::ios::end);
+    const long long available = static_cast<long long> (in.tellg () - start);
+    if (available < points * point_bytes)
+      return Status::error (path + ": truncated PCD file (" + std::to_string (available) + " data bytes, header promises " +
+                            std::to_string (points * point_bytes) + ")");
+  }
+  return Status::success ();
+}
+
 Status
 loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud)
 {
+  if (pcd)
+  {
+    const Status header = checkPcdHeader (path);
+    if (!header)
+      return header;
+  }
   pcl::PCLPointCloud2 blob;
   const int rc = pcd ? pcl::io::loadPCDFile (path, blob) : pcl::io::loadPLYFile (path, blob);
   if (rc < 0)

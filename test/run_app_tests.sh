@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Runs the command-line apps on shipped samples and on bad input; checks exit codes, messages
+# and outputs. Usage: run_app_tests.sh BUILD_DIR SOURCE_DIR
+set -u
+build=$1
+src=$2
+seg="$build/apps/flowseg_segment"
+gen="$build/apps/flowseg_make_samples"
+work=$(mktemp -d /tmp/flowseg_apps_XXXXXX)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+check() { # name, condition result (0 = ok)
+  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $1"; fi
+}
+
+# expect NAME EXIT_CODE MESSAGE_PATTERN -- command...
+expect() {
+  local name=$1 code=$2 pattern=$3
+  shift 4
+  "$@" >"$work/out.txt" 2>"$work/err.txt"
+  local rc=$?
+  if [ "$rc" -ne "$code" ]; then
+    echo "FAILED: $name: exit $rc, expected $code"; sed 's/^/    /' "$work/err.txt" | head -5; failed=$((failed + 1)); return
+  fi
+  if [ -n "$pattern" ] && ! grep -qiE "$pattern" "$work/out.txt" "$work/err.txt"; then
+    echo "FAILED: $name: output does not match '$pattern'"; sed 's/^/    /' "$work/err.txt" | head -5; failed=$((failed + 1)); return
+  fi
+  passed=$((passed + 1))
+}
+
+# --- good input: every shipped sample ------------------------------------------------------
+for sample in "$src"/samples/*.pcd; do
+  name=$(basename "$sample" .pcd)
+  expect "segment $name" 0 "segments after merging" -- "$seg" "$sample" --output "$work/$name"
+  n=$(grep -m1 '^POINTS' "$sample" | awk '{print $2}')
+  m=$(grep -m1 '^POINTS' "$work/$name.labels.pcd" 2>/dev/null | awk '{print $2}')
+  [ "$n" = "$m" ]; check "$name: label PCD has one point per input point ($n vs $m)" $?
+  grep -q '^FIELDS x y z label' "$work/$name.labels.pcd"; check "$name: label PCD fields" $?
+  head -1 "$work/$name.ply" | grep -q '^ply$'; check "$name: PLY header" $?
+  if command -v python3 >/dev/null 2>&1; then
+    python3 - "$work/$name.json" "$n" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["points"] == int(sys.argv[2]), "points"
+assert d["segment_count"] == len(d["segments"]) > 0, "segments"
+assert sum(s["point_count"] for s in d["segments"]) == d["points"], "point counts"
+assert all(k in d["timings_ms"] for k in ("delaunay", "flow", "merge", "total")), "timings"
+PY
+    check "$name: JSON well-formed and consistent" $?
+  fi
+  ls "$work" | grep -q '\.tmp\.'; [ $? -ne 0 ]; check "$name: no temporary files left" $?
+done
+
+# --- options ----------------------------------------------------------------------------
+expect "help lists defaults" 0 "default" -- "$seg" --help
+expect "2D forced on a 2D sample" 0 "2D:" -- "$seg" "$src/samples/hand2d.pcd" -d 2 --rho 0.5 --binary -o "$work/h"
+expect "3D forced on a 2D sample" 1 "coplanar" -- "$seg" "$src/samples/hand2d.pcd" -d 3 -o "$work/h3"
+[ ! -e "$work/h3.json" ] && [ ! -e "$work/h3.labels.pcd" ]; check "no output after a failure" $?
+expect "rho negative" 2 "rho" -- "$seg" "$src/samples/hand2d.pcd" --rho -1
+expect "rho not a number" 2 "rho" -- "$seg" "$src/samples/hand2d.pcd" --rho abc
+expect "rho missing value" 2 "rho" -- "$seg" "$src/samples/hand2d.pcd" --rho
+expect "dimension absurd" 2 "dimension" -- "$seg" "$src/samples/hand2d.pcd" --dimension 5
+expect "unknown option" 2 "unknown option" -- "$seg" "$src/samples/hand2d.pcd" --frobnicate
+expect "no input" 2 "no input" -- "$seg"
+
+# --- bad input -----------------------------------------------------------------------------
+expect "missing file" 1 "cannot open" -- "$seg" "$work/nope.pcd"
+printf 'this is not a pcd file\n\001\002' > "$work/corrupt.pcd"
+expect "corrupt PCD" 1 "not a PCD" -- "$seg" "$work/corrupt.pcd" -o "$work/c"
+printf 'garbage' > "$work/corrupt.ply"
+expect "corrupt PLY" 1 "PLY" -- "$seg" "$work/corrupt.ply" -o "$work/c"
+printf '1 2 3\nx y z\n' > "$work/bad.xyz"
+expect "bad XYZ line" 1 "bad.xyz:2" -- "$seg" "$work/bad.xyz" -o "$work/c"
+printf '# empty\n' > "$work/empty.xyz"
+expect "empty file" 1 "no points" -- "$seg" "$work/empty.xyz" -o "$work/c"
+printf '0 0 0\n1 0 0\n' > "$work/two.xyz"
+expect "fewer than d+1 points" 1 "at least 3" -- "$seg" "$work/two.xyz" -o "$work/c"
+printf '0 0 0\n1 1 1\n2 2 2\n3 3 3\n' > "$work/line.xyz"
+expect "collinear points" 1 "collinear" -- "$seg" "$work/line.xyz" -o "$work/c"
+printf 'nan 0 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0.5\n0 0 0\n' > "$work/nan.xyz"
+expect "NaN and duplicate are reported" 0 "1 non-finite, 1 duplicates" -- "$seg" "$work/nan.xyz" -o "$work/nan"
+printf 'solid x\n' > "$work/mesh.stl"
+expect "unknown extension" 1 "unknown file type" -- "$seg" "$work/mesh.stl"
+[ ! -e "$work/c.json" ]; check "no output for any bad input" $?
+expect "unwritable output" 1 "cannot write" -- "$seg" "$src/samples/star2d.pcd" -o "$work/no/such/dir/x"
+
+# --- sample generator ----------------------------------------------------------------------
+expect "generator" 0 "wrote" -- "$gen" --output "$work" --points2d 300 --points3d 400
+[ "$(grep -m1 '^POINTS' "$work/animal3d.pcd" | awk '{print $2}')" = "400" ]; check "generator point count" $?
+expect "generator bad option" 2 "bad or incomplete" -- "$gen" --points2d -5
+
+echo "apps: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs the build into a temporary prefix and builds a consumer project against it, through
+# the CMake package and through pkg-config. Usage: run_install_test.sh BUILD_DIR SOURCE_DIR
+set -eu
+build=$1
+src=$2
+work=$(mktemp -d /tmp/flowseg_install_XXXXXX)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" >/dev/null
+test -f "$work/prefix/include/pcl_flowseg/flow_segmentation.h"
+test -f "$work/prefix/lib/cmake/pcl_flowseg/pcl_flowsegConfig.cmake" || test -f "$work"/prefix/lib/*/cmake/pcl_flowseg/pcl_flowsegConfig.cmake
+if grep -rl "CGAL/" "$work/prefix/include/pcl_flowseg" >/dev/null; then
+  echo "FAILED: a public header includes CGAL"; exit 1
+fi
+cmake -S "$src/test/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$work/consumer" -j 2 >/dev/null
+LD_LIBRARY_PATH="$work/prefix/lib:$(dirname "$(find "$work/prefix" -name 'libpcl_flowseg.so' | head -1)")" "$work/consumer/consumer"
+pc=$(find "$work/prefix" -name pcl_flowseg.pc | head -1)
+PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs pcl_flowseg | grep -q -- "-lpcl_flowseg"
+echo "install: 1 passed, 0 failed"

@@ -1,0 +1,202 @@
+/*
+ * Reading point files and writing results: formats, errors, files that appear whole or not at all.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "test_support.h"
+
+#include <pcl_flowseg/flow_segmentation.h>
+#include <pcl_flowseg/point_io.h>
+#include <pcl_flowseg/result_writer.h>
+
+#include "atomic_file.h"
+
+#include <pcl/io/pcd_io.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+using namespace pcl_flowseg;
+
+namespace {
+
+class TempDir
+{
+public:
+  TempDir ()
+  {
+    char tmpl[] = "/tmp/flowseg_io_XXXXXX";
+    path_ = ::mkdtemp (tmpl);
+  }
+  ~TempDir () { std::system (("rm -rf '" + path_ + "'").c_str ()); }
+  std::string file (const std::string& name) const { return path_ + "/" + name; }
+  std::string write (const std::string& name, const std::string& text) const
+  {
+    std::ofstream (file (name), std::ios::binary) << text;
+    return file (name);
+  }
+
+private:
+  std::string path_;
+};
+
+bool
+exists (const std::string& path)
+{
+  return std::ifstream (path).good ();
+}
+
+std::string
+slurp (const std::string& path)
+{
+  std::ostringstream s;
+  s << std::ifstream (path).rdbuf ();
+  return s.str ();
+}
+
+} // namespace
+
+TEST (PointIO, TextFormats)
+{
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  ASSERT_TRUE (loadPointCloud (dir.write ("a.xyz", "# comment\n1 2 3\n4 5 6  # trailing\n\n7,8,9\n"), cloud).ok);
+  ASSERT_EQ (cloud.size (), 3u);
+  EXPECT_EQ (cloud[2].x, 7.0f);
+  EXPECT_EQ (cloud[2].z, 9.0f);
+  ASSERT_TRUE (loadPointCloud (dir.write ("b.txt", "1 2\n3 4\n5 6\n"), cloud).ok);
+  ASSERT_EQ (cloud.size (), 3u);
+  EXPECT_EQ (cloud[1].z, 0.0f);
+  EXPECT_EQ (cloud.width, 3u);
+
+  Status bad = loadPointCloud (dir.write ("c.xyz", "1 2 3\n4 five 6\n"), cloud);
+  EXPECT_FALSE (bad.ok);
+  EXPECT_NE (bad.message.find (":2:"), std::string::npos) << bad.message;
+  EXPECT_TRUE (cloud.empty ());
+  bad = loadPointCloud (dir.write ("d.xyz", "1 2 3\n4 5\n"), cloud);
+  EXPECT_NE (bad.message.find ("columns"), std::string::npos) << bad.message;
+  bad = loadPointCloud (dir.write ("e.xyz", "1\n"), cloud);
+  EXPECT_NE (bad.message.find ("at least 2"), std::string::npos) << bad.message;
+  bad = loadPointCloud (dir.write ("f.xyz", "# nothing\n"), cloud);
+  EXPECT_NE (bad.message.find ("no points"), std::string::npos) << bad.message;
+  ASSERT_TRUE (loadPointCloud (dir.write ("g.xyz", "nan 0 0\n1 1 1\n"), cloud).ok);
+  EXPECT_FALSE (cloud.is_dense);
+}
+
+TEST (PointIO, MeshVertices)
+{
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  const std::string off = "OFF\n# tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n3 0 2 3\n3 1 2 3\n";
+  ASSERT_TRUE (loadPointCloud (dir.write ("t.off", off), cloud).ok);
+  ASSERT_EQ (cloud.size (), 4u);
+  EXPECT_EQ (cloud[3].z, 1.0f);
+  const std::string obj = "# obj\nv 0 0 0\nvn 0 0 1\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1 2 3\n";
+  ASSERT_TRUE (loadPointCloud (dir.write ("t.obj", obj), cloud).ok);
+  EXPECT_EQ (cloud.size (), 3u);
+  EXPECT_FALSE (loadPointCloud (dir.write ("short.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n"), cloud).ok);
+  EXPECT_FALSE (loadPointCloud (dir.write ("bad.off", "PLY\n4 4 6\n"), cloud).ok);
+  EXPECT_FALSE (loadPointCloud (dir.write ("neg.off", "OFF\n-4 4 6\n"), cloud).ok);
+}
+
+TEST (PointIO, PcdAndPlyRoundTrip)
+{
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ> cloud, back;
+  for (int i = 0; i < 10; ++i)
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (i), static_cast<float> (i * i), 0.5f));
+  for (bool binary : {false, true})
+  {
+    const std::string path = dir.file (binary ? "b.pcd" : "a.pcd");
+    ASSERT_TRUE (writePointCloud (path, cloud, binary).ok);
+    ASSERT_TRUE (loadPointCloud (path, back).ok);
+    ASSERT_EQ (back.size (), cloud.size ());
+    EXPECT_EQ (back[9].y, 81.0f);
+  }
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                          "end_header\n0 0 0\n1 0 0\n0 1 2\n";
+  ASSERT_TRUE (loadPointCloud (dir.write ("a.ply", ply), back).ok) << loadPointCloud (dir.file ("a.ply"), back).message;
+  ASSERT_EQ (back.size (), 3u);
+  EXPECT_EQ (back[2].z, 2.0f);
+}
+
+TEST (PointIO, ClearErrors)
+{
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  Status s = loadPointCloud (dir.file ("missing.pcd"), cloud);
+  EXPECT_FALSE (s.ok);
+  EXPECT_NE (s.message.find ("cannot open"), std::string::npos) << s.message;
+  s = loadPointCloud (dir.write ("x.stl", "solid"), cloud);
+  EXPECT_NE (s.message.find ("unknown file type"), std::string::npos) << s.message;
+  s = loadPointCloud (dir.write ("junk.pcd", "this is not a pcd file\n\x01\x02"), cloud);
+  EXPECT_FALSE (s.ok);
+  EXPECT_NE (s.message.find ("PCD"), std::string::npos) << s.message;
+  s = loadPointCloud (dir.write ("junk.ply", "garbage"), cloud);
+  EXPECT_FALSE (s.ok);
+}
+
+TEST (ResultWriter, WritesAreAtomic)
+{
+  TempDir dir;
+  const std::string target = dir.file ("out.txt");
+  const Status failed = writeFileAtomically (target, [] (const std::string& tmp) {
+    std::ofstream (tmp) << "half";
+    return Status::error ("simulated failure");
+  });
+  EXPECT_FALSE (failed.ok);
+  EXPECT_FALSE (exists (target));
+  EXPECT_FALSE (exists (target + ".tmp." + std::to_string (::getpid ())));
+  const Status thrown = writeFileAtomically (target, [] (const std::string& tmp) -> Status {
+    std::ofstream (tmp) << "half";
+    throw std::runtime_error ("boom");
+  });
+  EXPECT_FALSE (thrown.ok);
+  EXPECT_FALSE (exists (target));
+  EXPECT_FALSE (writePointCloud (dir.file ("no/such/dir/x.pcd"), pcl::PointCloud<pcl::PointXYZ> (), false).ok);
+}
+
+TEST (ResultWriter, SegmentationOutputsAreWellFormed)
+{
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : flowseg_test::shapeSample ("hand2d", 400))
+    cloud->push_back (pcl::PointXYZ (static_cast<float> (p.x ()), static_cast<float> (p.y ()), 0.0f));
+  cloud->push_back (pcl::PointXYZ (std::nanf (""), 0.0f, 0.0f));
+  pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  std::vector<pcl::PointIndices> segments;
+  ASSERT_TRUE (seg.segment (segments));
+  pcl::PointCloud<pcl::PointXYZL> labels;
+  seg.getLabelCloud (labels);
+
+  ASSERT_TRUE (writeLabelCloud (dir.file ("l.pcd"), labels, true).ok);
+  pcl::PointCloud<pcl::PointXYZL> back;
+  ASSERT_EQ (pcl::io::loadPCDFile (dir.file ("l.pcd"), back), 0);
+  ASSERT_EQ (back.size (), labels.size ());
+  EXPECT_EQ (back[5].label, labels[5].label);
+  EXPECT_EQ (back.back ().label, kNoSegment);
+
+  RunInfo info;
+  info.input = "hand \"2d\".pcd";
+  info.rho = 1.3;
+  ASSERT_TRUE (writeSegmentationJson (dir.file ("r.json"), seg.getResult (), info).ok);
+  const std::string json = slurp (dir.file ("r.json"));
+  EXPECT_NE (json.find ("\"segment_count\": " + std::to_string (segments.size ())), std::string::npos);
+  EXPECT_NE (json.find ("\"timings_ms\""), std::string::npos);
+  EXPECT_NE (json.find ("hand \\\"2d\\\".pcd"), std::string::npos);
+  EXPECT_NE (json.find ("\"non_finite_points\": 1"), std::string::npos);
+  EXPECT_EQ (std::count (json.begin (), json.end (), '{'), std::count (json.begin (), json.end (), '}'));
+  EXPECT_EQ (json.find ("nan"), std::string::npos);
+  EXPECT_EQ (json.find (": inf"), std::string::npos);
+  EXPECT_EQ (json.find (": -nan"), std::string::npos);
+
+  ASSERT_TRUE (writeSegmentationPly (dir.file ("s.ply"), seg.getResult (), labels).ok);
+  const std::string ply = slurp (dir.file ("s.ply"));
+  EXPECT_NE (ply.find ("element vertex 400\n"), std::string::npos); // the NaN point is not drawn
+  EXPECT_NE (ply.find ("element face " + std::to_string (seg.getResult ().cells.size ())), std::string::npos);
+  EXPECT_EQ (ply.find ("nan"), std::string::npos);
+}
