@@ -12,41 +12,47 @@ namespace core {
 void
 labelPoints (FlowResult& result)
 {
-  struct Share
-  {
-    int vertex;
-    int segment;
-    double volume;
-  };
   const int facets = result.dimension + 1;
-  std::vector<Share> shares;
-  shares.reserve (result.cells.size () * static_cast<std::size_t> (facets));
+  const std::size_t nv = result.vertices.size ();
+
+  // Incident cells of every vertex (compressed rows, built by counting).
+  std::vector<std::size_t> first (nv + 1, 0);
   for (const FlowCell& cell : result.cells)
     for (int i = 0; i < facets; ++i)
-      shares.push_back (Share{cell.vertices[i], cell.segment, cell.volume});
-  std::sort (shares.begin (), shares.end (), [] (const Share& a, const Share& b) {
-    return a.vertex != b.vertex ? a.vertex < b.vertex : a.segment < b.segment;
-  });
+      ++first[static_cast<std::size_t> (cell.vertices[i]) + 1];
+  for (std::size_t v = 0; v < nv; ++v)
+    first[v + 1] += first[v];
+  std::vector<int> incident (first[nv]);
+  std::vector<std::size_t> fill (first.begin (), first.end () - 1);
+  for (std::size_t c = 0; c < result.cells.size (); ++c)
+    for (int i = 0; i < facets; ++i)
+      incident[fill[static_cast<std::size_t> (result.cells[c].vertices[i])]++] = static_cast<int> (c);
 
-  std::vector<std::uint32_t> vertex_label (result.vertices.size (), kNoSegment);
-  for (std::size_t k = 0; k < shares.size ();)
+  // Per vertex: total incident volume per segment, the largest wins (ties: lower segment id).
+  std::vector<std::uint32_t> vertex_label (nv, kNoSegment);
+  std::vector<std::pair<int, double>> sums;
+  for (std::size_t v = 0; v < nv; ++v)
   {
-    const int v = shares[k].vertex;
+    sums.clear ();
+    for (std::size_t k = first[v]; k < first[v + 1]; ++k)
+    {
+      const FlowCell& cell = result.cells[static_cast<std::size_t> (incident[k])];
+      auto it = std::find_if (sums.begin (), sums.end (), [&] (const auto& e) { return e.first == cell.segment; });
+      if (it == sums.end ())
+        sums.emplace_back (cell.segment, cell.volume);
+      else
+        it->second += cell.volume;
+    }
     int best = -1;
     double best_volume = -1.0;
-    while (k < shares.size () && shares[k].vertex == v)
-    {
-      const int s = shares[k].segment;
-      double sum = 0.0;
-      for (; k < shares.size () && shares[k].vertex == v && shares[k].segment == s; ++k)
-        sum += shares[k].volume;
-      if (sum > best_volume) // segments come in increasing order: ties keep the lower id
+    for (const auto& e : sums)
+      if (e.second > best_volume || (e.second == best_volume && e.first < best))
       {
-        best_volume = sum;
-        best = s;
+        best = e.first;
+        best_volume = e.second;
       }
-    }
-    vertex_label[static_cast<std::size_t> (v)] = static_cast<std::uint32_t> (best);
+    if (best >= 0)
+      vertex_label[v] = static_cast<std::uint32_t> (best);
   }
 
   for (FlowSegment& s : result.segments)
