@@ -5,7 +5,7 @@
 #include <pcl_flowseg/point_io.h>
 
 #include <pcl/PCLPointCloud2.h>
-#include <pcl/conversions.h>
+#include <pcl/common/io.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 
@@ -273,25 +273,44 @@ loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& 
   const int rc = pcd ? pcl::io::loadPCDFile (path, blob) : pcl::io::loadPLYFile (path, blob);
   if (rc < 0)
     return Status::error (path + ": not a readable " + std::string (pcd ? "PCD" : "PLY") + " file");
-  bool has_x = false, has_y = false, has_z = false;
+  // Coordinates are read field by field in whatever numeric type the file uses (PLY files often
+  // store doubles, which pcl::fromPCLPointCloud2 would not convert into PointXYZ).
+  const pcl::PCLPointField* axis[3] = {nullptr, nullptr, nullptr};
   for (const auto& f : blob.fields)
-  {
-    has_x |= f.name == "x";
-    has_y |= f.name == "y";
-    has_z |= f.name == "z";
-  }
-  if (!has_x || !has_y)
+    for (int k = 0; k < 3; ++k)
+      if (f.name == std::string (1, "xyz"[k]))
+        axis[k] = &f;
+  if (!axis[0] || !axis[1])
     return Status::error (path + ": has no x/y fields (not a point cloud)");
-  if (!has_z)
+  const std::size_t n = static_cast<std::size_t> (blob.width) * blob.height;
+  if (blob.point_step == 0 || blob.data.size () < n * blob.point_step)
+    return Status::error (path + ": point data shorter than its header says");
+  for (const auto* f : axis)
+    if (f && f->offset + pcl::getFieldSize (f->datatype) > blob.point_step)
+      return Status::error (path + ": field '" + f->name + "' lies outside the point record");
+  auto read = [&] (const pcl::PCLPointField* f, const std::uint8_t* record) -> double {
+    if (!f)
+      return 0.0;
+    const std::uint8_t* p = record + f->offset;
+    switch (f->datatype)
+    {
+      case pcl::PCLPointField::INT8: { std::int8_t v; std::memcpy (&v, p, 1); return v; }
+      case pcl::PCLPointField::UINT8: { std::uint8_t v; std::memcpy (&v, p, 1); return v; }
+      case pcl::PCLPointField::INT16: { std::int16_t v; std::memcpy (&v, p, 2); return v; }
+      case pcl::PCLPointField::UINT16: { std::uint16_t v; std::memcpy (&v, p, 2); return v; }
+      case pcl::PCLPointField::INT32: { std::int32_t v; std::memcpy (&v, p, 4); return v; }
+      case pcl::PCLPointField::UINT32: { std::uint32_t v; std::memcpy (&v, p, 4); return v; }
+      case pcl::PCLPointField::FLOAT64: { double v; std::memcpy (&v, p, 8); return v; }
+      default: { float v; std::memcpy (&v, p, 4); return v; }
+    }
+  };
+  cloud.reserve (n);
+  for (std::size_t i = 0; i < n; ++i)
   {
-    // Add a zero z so that the conversion is complete (2D data).
-    pcl::PointCloud<pcl::PointXY> xy;
-    pcl::fromPCLPointCloud2 (blob, xy);
-    for (const auto& p : xy)
-      cloud.push_back (pcl::PointXYZ (p.x, p.y, 0.0f));
+    const std::uint8_t* record = blob.data.data () + i * blob.point_step;
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (read (axis[0], record)), static_cast<float> (read (axis[1], record)),
+                                    static_cast<float> (read (axis[2], record))));
   }
-  else
-    pcl::fromPCLPointCloud2 (blob, cloud);
   return Status::success ();
 }
 

@@ -123,6 +123,41 @@ TEST (PointIO, PcdAndPlyRoundTrip)
   EXPECT_EQ (back[2].z, 2.0f);
 }
 
+TEST (PointIO, PlyWithDoubleCoordinates)
+{
+  TempDir dir;
+  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty double x\nproperty double y\n"
+                    "property double z\nproperty double nx\nend_header\n";
+  const double values[8] = {1.5, -2.25, 3.0, 0.0, 4.0, 5.0, 6.5, 1.0};
+  ply.append (reinterpret_cast<const char*> (values), sizeof (values));
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  ASSERT_TRUE (loadPointCloud (dir.write ("d.ply", ply), cloud).ok);
+  ASSERT_EQ (cloud.size (), 2u);
+  EXPECT_EQ (cloud[0].y, -2.25f);
+  EXPECT_EQ (cloud[1].z, 6.5f);
+}
+
+TEST (PointIO, SharedCloudsLoadAndSegment)
+{
+  const std::string dir = flowseg_test::sharedDataPath ("clouds/pcl/bunny.pcd");
+  if (dir.empty ())
+    GTEST_SKIP () << "../shared/data not present";
+  const std::string base = dir.substr (0, dir.size () - std::string ("pcl/bunny.pcd").size ());
+  for (const char* name : {"pcl/bunny.pcd", "pcl/milk.pcd", "cgal/kitten.xyz", "cgal/hippo1.ply"})
+  {
+    pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+    const Status s = loadPointCloud (base + name, *cloud);
+    ASSERT_TRUE (s.ok) << s.message;
+    pcl::FlowSegmentation<pcl::PointXYZ> seg;
+    seg.setInputCloud (cloud);
+    std::vector<pcl::PointIndices> segments;
+    ASSERT_TRUE (seg.segment (segments)) << name << ": " << seg.getLastError ();
+    EXPECT_EQ (seg.getResult ().dimension, 3) << name;
+    EXPECT_GT (seg.getResult ().vertices.size (), 0.99 * cloud->size ()) << name << ": coordinates lost in reading";
+    EXPECT_GT (segments.size (), 2u) << name;
+  }
+}
+
 TEST (PointIO, ClearErrors)
 {
   TempDir dir;
