@@ -4,7 +4,9 @@
  */
 #include <pcl_flowseg/flow_core.h>
 
+#include "core/cell_geometry.h"
 #include "core/delaunay_cells.h"
+#include "core/interior_labelling.h"
 #include "core/point_preparation.h"
 #include "core/point_labels.h"
 #include "core/segment_graph.h"
@@ -29,32 +31,6 @@ millisecondsSince (Clock::time_point start)
   return std::chrono::duration<double, std::milli> (Clock::now () - start).count ();
 }
 
-/** Circumcentre of a cell from its input-frame vertices. */
-Eigen::Vector3d
-cellCircumcentre (const std::vector<Eigen::Vector3d>& vertices, const FlowCell& cell, int dimension)
-{
-  if (dimension == 2)
-  {
-    Eigen::Vector3d centre;
-    // The circumcentre of a triangle is the centre of the smallest sphere through its vertices
-    // lying in its plane: the facet formula applied to the "facet" made of all three vertices.
-    FlowCell tri = cell;
-    tri.vertices = {{-1, cell.vertices[0], cell.vertices[1], cell.vertices[2]}};
-    core::facetSquaredRadius (vertices, tri, 0, 3, &centre);
-    return centre;
-  }
-  const Eigen::Vector3d& a = vertices[static_cast<std::size_t> (cell.vertices[0])];
-  Eigen::Matrix3d m;
-  Eigen::Vector3d rhs;
-  for (int i = 1; i < 4; ++i)
-  {
-    const Eigen::Vector3d d = vertices[static_cast<std::size_t> (cell.vertices[i])] - a;
-    m.row (i - 1) = d.transpose ();
-    rhs[i - 1] = 0.5 * d.squaredNorm ();
-  }
-  return a + m.partialPivLu ().solve (rhs);
-}
-
 /** Stable manifolds as FlowSegments, with their maxima and statistics. */
 void
 buildManifolds (const core::StableManifolds& sm, FlowResult& result)
@@ -66,7 +42,7 @@ buildManifolds (const core::StableManifolds& sm, FlowResult& result)
     FlowMaximum m;
     m.cell = c;
     m.height = result.cells[static_cast<std::size_t> (c)].squared_radius;
-    m.location = cellCircumcentre (result.vertices, result.cells[static_cast<std::size_t> (c)], dim);
+    m.location = core::cellCircumcentre (result.vertices, result.cells[static_cast<std::size_t> (c)], dim);
     result.maxima.push_back (m);
   }
   const int count = static_cast<int> (sm.maxima_cells.size ()) + (sm.has_infinity ? 1 : 0);
@@ -124,6 +100,11 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
     return failure (result, "rho must be a finite number > 0, got " + std::to_string (params.rho));
   if (!std::isfinite (params.planar_tolerance) || params.planar_tolerance < 0.0)
     return failure (result, "planar tolerance must be a finite number >= 0");
+  if (!params.normals.empty () && params.normals.size () != points.size ())
+    return failure (result, "normals: " + std::to_string (params.normals.size ()) + " given for " +
+                                std::to_string (points.size ()) + " points");
+  if (params.use_viewpoint && !params.viewpoint.allFinite ())
+    return failure (result, "the viewpoint has non-finite coordinates");
   auto report = [&] (const char* stage, double fraction) {
     if (progress)
       progress (stage, fraction);
@@ -169,6 +150,31 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
                                  " cell(s) not ordered by the flow (degenerate input): resolved by height");
     buildManifolds (sm, result);
     result.timings.flow_ms = millisecondsSince (stage);
+
+    if (params.separate_interior)
+    {
+      report ("interior", 0.7);
+      stage = Clock::now ();
+      std::vector<Eigen::Vector3d> vertex_normals;
+      if (!params.normals.empty ())
+      {
+        vertex_normals.assign (result.vertices.size (), Eigen::Vector3d::Zero ());
+        for (std::size_t i = result.point_to_vertex.size (); i-- > 0;) // the first copy wins
+          if (result.point_to_vertex[i] >= 0)
+            vertex_normals[static_cast<std::size_t> (result.point_to_vertex[i])] = params.normals[i];
+      }
+      core::labelInterior (result, params, vertex_normals);
+      if (!result.interior.closed)
+        result.warnings.push_back ("the interior/exterior boundary is not closed");
+      else if (!result.interior.manifold)
+        result.warnings.push_back ("the interior/exterior boundary has " + std::to_string (result.interior.nonmanifold_edges) +
+                                   " non-manifold edge(s) and " + std::to_string (result.interior.nonmanifold_vertices) +
+                                   " non-manifold vertex(es)");
+      if (result.interior.inside_cells == 0)
+        result.warnings.push_back ("no cell was labelled inside: the sample may not enclose a volume (open scan, hole?)");
+      result.timings.interior_ms = millisecondsSince (stage);
+    }
+    result.feature_side = params.features;
 
     report ("merge", 0.8);
     stage = Clock::now ();

@@ -23,13 +23,25 @@ run (const std::vector<V>& pts, DimensionMode mode = DimensionMode::Automatic, d
   params.dimension = mode;
   params.rho = rho;
   FlowResult r;
-  return runFlowSegmentation (pts, params, r);
+  const Status full = runFlowSegmentation (pts, params, r);
+  params.separate_interior = false;
+  const Status raw = runFlowSegmentation (pts, params, r);
+  EXPECT_EQ (raw.ok, full.ok);
+  EXPECT_EQ (raw.message, full.message);
+  return raw;
 }
 
 /** Every cell has a segment, every finite point a label, and the counts add up. */
 void
 expectConsistent (const FlowResult& r)
 {
+  if (r.interior.computed)
+  {
+    // Points inside the shape (grids, random clouds) touch no interior feature: unlabelled.
+    for (const auto& c : r.cells)
+      ASSERT_TRUE (c.segment >= 0 && static_cast<std::size_t> (c.segment) < r.segments.size ());
+    return;
+  }
   std::size_t cells = 0;
   for (const auto& s : r.segments)
     cells += s.cell_count;
@@ -124,6 +136,9 @@ TEST (Degenerate, RegularGridsAreCocircularEverywhere)
   const FlowResult r3 = segmentOrDie (grid3);
   EXPECT_EQ (r3.dimension, 3);
   expectConsistent (r3);
+  // The whole pipeline (interior/exterior included) copes with the grids too.
+  expectConsistent (segmentOrDie (grid2, kDefaultRho, DimensionMode::Automatic, true));
+  expectConsistent (segmentOrDie (grid3, kDefaultRho, DimensionMode::Automatic, true));
   // Right triangles of a grid hold their circumcentre on an edge: no flow at all.
   for (const auto& c : r2.cells)
     EXPECT_EQ (c.flow_mask, 0);
@@ -150,6 +165,9 @@ TEST (Degenerate, CosphericalPoints)
   }
   const FlowResult r = segmentOrDie (sphere);
   expectConsistent (r);
+  const FlowResult full = segmentOrDie (sphere, kDefaultRho, DimensionMode::Automatic, true);
+  expectConsistent (full);
+  EXPECT_GT (full.interior.inside_volume, 0.9 * 4.18879) << "the unit sphere encloses its volume";
   // A circle: every triangle is inscribed in the same circle.
   std::vector<V> circle;
   for (int i = 0; i < 64; ++i)

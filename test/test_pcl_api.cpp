@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 using flowseg_test::shapeSample;
 
@@ -41,6 +42,8 @@ TYPED_TEST (FlowSegmentationTyped, SegmentsCoverEveryPointOnce)
   typename pcl::FlowSegmentation<TypeParam>::Ptr seg (new pcl::FlowSegmentation<TypeParam>);
   seg->setInputCloud (cloud);
   EXPECT_EQ (seg->getRho (), pcl_flowseg::kDefaultRho);
+  EXPECT_TRUE (seg->getSeparateInterior ());
+  seg->setSeparateInterior (false); // the raw segmentation covers every point
   std::vector<pcl::PointIndices> segments;
   ASSERT_TRUE (seg->segment (segments)) << seg->getLastError ();
   EXPECT_TRUE (seg->getLastError ().empty ());
@@ -68,6 +71,67 @@ TYPED_TEST (FlowSegmentationTyped, SegmentsCoverEveryPointOnce)
   EXPECT_GE (t.total_ms, t.delaunay_ms + t.flow_ms + t.merge_ms);
 }
 
+TEST (FlowSegmentation, InteriorFeaturesByDefault)
+{
+  auto cloud = makeCloud<pcl::PointXYZ> (shapeSample ("dumbbell3d", 3000));
+  pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  std::vector<pcl::PointIndices> features;
+  ASSERT_TRUE (seg.segment (features)) << seg.getLastError ();
+  const auto& r = seg.getResult ();
+  ASSERT_TRUE (r.interior.computed);
+  ASSERT_EQ (features.size (), r.features.size ());
+  for (int k : r.features)
+    EXPECT_EQ (r.segments[static_cast<std::size_t> (k)].interior, 1);
+  // Every sample of a closed surface touches the interior: all points are labelled.
+  std::size_t labelled = 0;
+  for (const auto& f : features)
+    labelled += f.indices.size ();
+  EXPECT_EQ (labelled, cloud->size ());
+  EXPECT_GT (r.timings.interior_ms, 0.0);
+
+  seg.setFeatureSide (pcl_flowseg::FeatureSide::Exterior);
+  std::vector<pcl::PointIndices> pockets;
+  ASSERT_TRUE (seg.segment (pockets));
+  for (int k : seg.getResult ().features)
+    EXPECT_EQ (seg.getResult ().segments[static_cast<std::size_t> (k)].interior, 0);
+}
+
+TEST (FlowSegmentation, NormalsAndSensorOriginAreUsedOnRequest)
+{
+  // Outward normals of the unit sphere are the positions themselves.
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud (new pcl::PointCloud<pcl::PointNormal>);
+  std::mt19937 rng (3);
+  std::normal_distribution<float> g (0, 1);
+  for (int i = 0; i < 2000; ++i)
+  {
+    Eigen::Vector3f p (g (rng), g (rng), g (rng));
+    p.normalize ();
+    pcl::PointNormal q;
+    q.x = p.x (); q.y = p.y (); q.z = p.z ();
+    q.normal_x = p.x (); q.normal_y = p.y (); q.normal_z = p.z ();
+    cloud->push_back (q);
+  }
+  pcl::FlowSegmentation<pcl::PointNormal> seg;
+  seg.setInputCloud (cloud);
+  seg.setUseNormals (true);
+  std::vector<pcl::PointIndices> features;
+  ASSERT_TRUE (seg.segment (features)) << seg.getLastError ();
+  EXPECT_NEAR (seg.getResult ().interior.inside_volume, 4.18879, 0.1);
+  // Normals pointing inwards turn the sphere inside out: then the labelling changes.
+  for (auto& q : *cloud)
+  {
+    q.normal_x = -q.normal_x; q.normal_y = -q.normal_y; q.normal_z = -q.normal_z;
+  }
+  ASSERT_TRUE (seg.segment (features));
+  EXPECT_LT (seg.getResult ().interior.inside_volume, 4.0);
+  seg.setUseNormals (false);
+  cloud->sensor_origin_ = Eigen::Vector4f (0, 0, 5, 0);
+  seg.setUseSensorOrigin (true);
+  ASSERT_TRUE (seg.segment (features));
+  EXPECT_GT (seg.getResult ().interior.ray_cells, 0u);
+}
+
 TEST (FlowSegmentation, IndicesRestrictTheInput)
 {
   auto cloud = makeCloud<pcl::PointXYZ> (shapeSample ("dumbbell3d", 2000));
@@ -78,6 +142,7 @@ TEST (FlowSegmentation, IndicesRestrictTheInput)
   pcl::FlowSegmentation<pcl::PointXYZ> seg;
   seg.setInputCloud (cloud);
   seg.setIndices (indices);
+  seg.setSeparateInterior (false);
   std::vector<pcl::PointIndices> segments;
   ASSERT_TRUE (seg.segment (segments)) << seg.getLastError ();
   EXPECT_EQ (seg.getResult ().input_points, indices->size ());

@@ -68,15 +68,17 @@ class Dumbbell : public ::testing::TestWithParam<const char*> {};
 TEST_P (Dumbbell, DefaultRhoSeparatesTheTwoBulbs)
 {
   const std::string name = GetParam ();
-  const FlowResult r = segmentOrDie (shapeSample (name, name == "dumbbell2d" ? 1500 : 4000));
+  // The whole pipeline: the bulbs must come out as separate interior features.
+  const FlowResult r = segmentOrDie (shapeSample (name, name == "dumbbell2d" ? 1500 : 4000), kDefaultRho,
+                                     DimensionMode::Automatic, true);
   const V left (-2, 0, 0), right (2, 0, 0);
   const int cl = cellContaining (r, left), cr = cellContaining (r, right);
   ASSERT_GE (cl, 0);
   ASSERT_GE (cr, 0);
   const int sl = r.cells[static_cast<std::size_t> (cl)].segment, sr = r.cells[static_cast<std::size_t> (cr)].segment;
   EXPECT_NE (sl, sr) << "the two bulbs merged into one segment";
-  EXPECT_FALSE (r.segments[static_cast<std::size_t> (sl)].flows_to_infinity);
-  EXPECT_FALSE (r.segments[static_cast<std::size_t> (sr)].flows_to_infinity);
+  EXPECT_EQ (r.segments[static_cast<std::size_t> (sl)].interior, 1);
+  EXPECT_EQ (r.segments[static_cast<std::size_t> (sr)].interior, 1);
   // Each bulb's core belongs to its own segment.
   EXPECT_GT (shareOfBall (r, left, 0.8, sl), 0.95);
   EXPECT_GT (shareOfBall (r, right, 0.8, sr), 0.95);
@@ -90,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P (Shapes, Dumbbell, ::testing::Values ("dumbbell2d", "du
 TEST (Shapes, SnowmanBallsAreSeparateSegments)
 {
   const BlobShape shape = sampleShape ("snowman3d");
-  const FlowResult r = segmentOrDie (sampleBoundary (shape, 4000, 3));
+  const FlowResult r = segmentOrDie (sampleBoundary (shape, 4000, 3), kDefaultRho, DimensionMode::Automatic, true);
   std::vector<int> seg;
   for (const auto& part : shape.parts)
   {

@@ -37,14 +37,17 @@ randomPoints (std::size_t count, int dimension, std::uint32_t seed)
   return pts;
 }
 
-/** Runs the core and fails the calling test when it does not succeed. */
+/** Runs the core and fails the calling test when it does not succeed. By default the paper's raw
+  * segmentation of the whole convex hull (no interior/exterior separation): the structural
+  * tests check the flow itself. */
 inline pcl_flowseg::FlowResult
 segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = pcl_flowseg::kDefaultRho,
-              pcl_flowseg::DimensionMode mode = pcl_flowseg::DimensionMode::Automatic)
+              pcl_flowseg::DimensionMode mode = pcl_flowseg::DimensionMode::Automatic, bool separate_interior = false)
 {
   pcl_flowseg::FlowParameters params;
   params.rho = rho;
   params.dimension = mode;
+  params.separate_interior = separate_interior;
   pcl_flowseg::FlowResult result;
   const auto status = pcl_flowseg::runFlowSegmentation (pts, params, result);
   if (!status.ok)

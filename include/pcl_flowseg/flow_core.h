@@ -24,6 +24,14 @@ enum class DimensionMode
   Spatial = 3    ///< 3D: fails on coplanar input
 };
 
+/** \brief Whether the interior/exterior separation works on a smoothed copy of noisy samples. */
+enum class Denoising
+{
+  Automatic = 0, ///< when the median surface variation of the sample shows noise (default)
+  Off = 1,       ///< never: use the sample as it is
+  Always = 2     ///< always smooth (at least one pass)
+};
+
 /** \brief Parameters of the flow segmentation. */
 struct FlowParameters
 {
@@ -33,6 +41,21 @@ struct FlowParameters
     * Values below 1 merge nothing. Default kDefaultRho. */
   double rho = kDefaultRho;
   DimensionMode dimension = DimensionMode::Automatic;
+  /** Separate the shape's interior from its exterior (surface/curve reconstruction). Default on;
+    * off gives the paper's raw segmentation of the whole convex hull. */
+  bool separate_interior = true;
+  /** Which features are reported. Default: the interior ones. */
+  FeatureSide features = FeatureSide::Interior;
+  /** Denoising for the interior/exterior separation (the segmentation itself always uses the
+    * sample as given). Default Automatic. */
+  Denoising denoising = Denoising::Automatic;
+  /** Optional outward normals, one per input point (empty: none). Oriented normals make the
+    * interior/exterior decision near the surface more reliable, notably with noise. */
+  std::vector<Eigen::Vector3d> normals;
+  /** Optional sensor position of a single-view scan: the cells the rays from it to the points
+    * cross are free space, hence outside. */
+  bool use_viewpoint = false;
+  Eigen::Vector3d viewpoint = Eigen::Vector3d::Zero ();
   /** Relative flatness below which Automatic chooses 2D: the spread of the points normal to
     * their best-fit plane divided by the bounding-box diagonal. Default 1e-9. */
   double planar_tolerance = 1e-9;

@@ -45,6 +45,8 @@ struct FlowCell
   int manifold = -1;
   /** Segment (after merging) the cell belongs to: index into FlowResult::segments. */
   int segment = -1;
+  /** Interior/exterior label: 1 inside the shape, 0 outside, -1 not computed. */
+  std::int8_t inside = -1;
 };
 
 /** \brief A maximum of the distance function: a cell that contains its own circumcentre. */
@@ -73,6 +75,8 @@ struct FlowSegment
 {
   /** True for the cells whose flow leaves the convex hull (the maximum at infinity). */
   bool flows_to_infinity = false;
+  /** 1: a feature of the shape's interior, 0: of the exterior, -1: not separated. */
+  std::int8_t interior = -1;
   /** Highest maximum of the segment (for the infinity segment: cell -1, height +inf). */
   FlowMaximum maximum;
   /** Indices into FlowResult::maxima of all maxima merged into this segment. */
@@ -89,9 +93,43 @@ struct StageTimings
   double preparation_ms = 0.0; ///< finite filter, duplicates, dimension detection
   double delaunay_ms = 0.0;    ///< CGAL triangulation and its conversion to cells
   double flow_ms = 0.0;        ///< flow relation, maxima, stable manifolds
+  double interior_ms = 0.0;    ///< interior/exterior separation (surface reconstruction)
   double merge_ms = 0.0;       ///< rho-merging and segment statistics
   double labels_ms = 0.0;      ///< per-point labels
   double total_ms = 0.0;
+};
+
+/** \brief Which features are reported (segment(), per-point labels). */
+enum class FeatureSide
+{
+  Interior = 0, ///< the shape's features (default)
+  Exterior = 1, ///< pockets and concavities outside the shape
+  Both = 2      ///< every segment
+};
+
+/** \brief What the interior/exterior separation found. */
+struct InteriorReport
+{
+  bool computed = false;
+  double inside_volume = 0.0;       ///< total volume (area) of the cells labelled inside
+  std::size_t inside_cells = 0;
+  std::size_t boundary_facets = 0;  ///< facets between inside and outside (the surface/curve)
+  /** Boundary edges (3D) or vertices (2D) not shared by exactly two boundary facets. */
+  std::size_t nonmanifold_edges = 0;
+  /** Boundary vertices whose boundary facets do not form a single disk (3D) or which lie on
+    * more than two boundary edges (2D). */
+  std::size_t nonmanifold_vertices = 0;
+  /** Sample points on no boundary facet (inside the shape, or in a spurious pocket). */
+  std::size_t vertices_off_boundary = 0;
+  bool closed = false;   ///< every boundary edge (3D) / vertex (2D) bounds an even number of facets
+  bool manifold = false; ///< closed, and no non-manifold edge or vertex
+  std::size_t ray_cells = 0; ///< cells marked outside by sensor rays (viewpoint given)
+  /** Median over the samples of the surface variation of their 16 nearest neighbours (smallest
+    * PCA eigenvalue over the sum; in 2D the same for the curve): about 0.001 for clean dense
+    * samples, 0.03 and more for noisy ones. */
+  double surface_variation = 0.0;
+  /** Smoothing passes applied before separating interior and exterior (0: the sample as given). */
+  int smoothing_passes = 0;
 };
 
 /** \brief Everything FlowSegmentation computes, with no CGAL type in it. */
@@ -111,14 +149,27 @@ struct FlowResult
   std::vector<FlowMaximum> maxima;    ///< all maxima, ordered by decreasing height
   /** Stable manifolds before merging; the last one flows to infinity when any cell does. */
   std::vector<FlowSegment> manifolds;
-  /** Segments after rho-merging, ordered by decreasing volume. */
+  /** Segments after rho-merging: interior ones by decreasing volume, then exterior ones, the one at
+    * infinity last. With interior/exterior separation every cell belongs to a segment of its own
+    * side: a cell whose flow leaves its side joins the neighbouring segment of its side it touches
+    * through its highest facet. */
   std::vector<FlowSegment> segments;
   /** Saddles between adjacent stable manifolds (segment_a/b index \a manifolds). */
   std::vector<SaddleFacet> manifold_adjacency;
   /** Saddles between adjacent segments after merging (segment_a/b index \a segments). */
   std::vector<SaddleFacet> segment_adjacency;
 
-  /** Segment of each input point (kNoSegment for non-finite points). */
+  /** Interior/exterior separation summary (computed = false when it was switched off). */
+  InteriorReport interior;
+  /** Which side's segments are reported as features. */
+  FeatureSide feature_side = FeatureSide::Interior;
+  /** Segments reported as features, in order: indices into \a segments. Without interior/exterior
+    * separation, every segment. */
+  std::vector<int> features;
+
+  /** Feature of each input point: index into \a features (so into the PointIndices returned by
+    * FlowSegmentation::segment), or kNoSegment for non-finite points and points with no incident
+    * cell on the reported side. */
   std::vector<std::uint32_t> point_labels;
 
   /** Cells that could not be ordered by the flow (only on degenerate input; they become

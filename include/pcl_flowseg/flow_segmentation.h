@@ -26,8 +26,9 @@ namespace pcl {
   * Delaunay cells; each input point is labelled with the segment owning most of the volume of
   * its incident cells.
   *
-  * Until interior/exterior separation is added, segments cover all of the convex hull: the
-  * segment whose cells flow out of the hull is flagged flows_to_infinity and comes last.
+  * The cells are labelled inside or outside the sampled shape by a surface (curve) reconstruction;
+  * by default the interior segments are reported: the shape's features. The exterior segments
+  * (pockets, concavities) or all segments are available with setFeatureSide().
   *
   * Usage:
   * \code
@@ -77,13 +78,34 @@ public:
   inline void setPlanarTolerance (double tolerance) { params_.planar_tolerance = tolerance; }
   inline double getPlanarTolerance () const { return params_.planar_tolerance; }
 
+  /** \brief Separate interior and exterior (default true). False gives the paper's raw
+    * segmentation of the whole convex hull, every segment reported. */
+  inline void setSeparateInterior (bool separate) { params_.separate_interior = separate; }
+  inline bool getSeparateInterior () const { return params_.separate_interior; }
+
+  /** \brief Which segments segment() reports: Interior (default), Exterior or Both. */
+  inline void setFeatureSide (pcl_flowseg::FeatureSide side) { params_.features = side; }
+  inline pcl_flowseg::FeatureSide getFeatureSide () const { return params_.features; }
+
+  /** \brief Use the points' normals (point types with normal_x/y/z; they must point outwards)
+    * as evidence for interior/exterior. Default false. Ignored for types without normals. */
+  inline void setUseNormals (bool use) { use_normals_ = use; }
+  inline bool getUseNormals () const { return use_normals_; }
+
+  /** \brief Treat the input cloud's sensor_origin_ as the viewpoint of a single-view scan: the
+    * space the rays from it to the points cross is outside. Default false. */
+  inline void setUseSensorOrigin (bool use) { use_sensor_origin_ = use; }
+  inline bool getUseSensorOrigin () const { return use_sensor_origin_; }
+
   /** \brief Called with a stage name and the fraction done; empty by default. */
   inline void setProgressCallback (const pcl_flowseg::ProgressCallback& cb) { progress_ = cb; }
 
   /** \brief Segments the input (honouring setIndices).
-    * \param[out] segments one PointIndices per segment, in the order of getResult().segments
-    *             (finite segments by decreasing volume, the one at infinity last), holding
-    *             indices into the input cloud.
+    * \param[out] segments one PointIndices per reported feature, in the order of
+    *             getResult().features (by decreasing volume; interior features first when both
+    *             sides are reported; the segment at infinity last), holding indices into the input
+    *             cloud. A point belongs to the feature holding most of the volume of its incident
+    *             cells on the reported side.
     * \return false on bad input or parameters; getLastError() says why, segments is empty. */
   bool segment (std::vector<PointIndices>& segments);
 
@@ -91,8 +113,9 @@ public:
     * \return false when segment() has not succeeded before or rho is invalid. */
   bool remerge (double rho, std::vector<PointIndices>& segments);
 
-  /** \brief One PointXYZL per point of the input cloud, in input order: label = segment id;
-    * points outside the indices or with non-finite coordinates get pcl_flowseg::kNoSegment. */
+  /** \brief One PointXYZL per point of the input cloud, in input order: label = index into the
+    * segments returned by segment(); points outside the indices, with non-finite coordinates or
+    * touching no reported feature get pcl_flowseg::kNoSegment. */
   void getLabelCloud (PointCloud<PointXYZL>& labels) const;
 
   /** \brief Everything computed by the last successful segment(): cells, maxima, stable
@@ -105,9 +128,12 @@ public:
 
 protected:
   void extractIndices (std::vector<PointIndices>& segments) const;
+  void copyNormals (std::vector<Eigen::Vector3d>& normals) const;
 
   pcl_flowseg::FlowParameters params_;
   bool dimension_ok_ = true;
+  bool use_normals_ = false;
+  bool use_sensor_origin_ = false;
   pcl_flowseg::ProgressCallback progress_;
   pcl_flowseg::FlowResult result_;
   std::vector<index_t> used_indices_; ///< cloud index of each point handed to the core

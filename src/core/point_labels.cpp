@@ -4,6 +4,8 @@
  */
 #include "point_labels.h"
 
+#include "cell_geometry.h"
+
 #include <algorithm>
 
 namespace pcl_flowseg {
@@ -12,21 +14,11 @@ namespace core {
 void
 labelPoints (FlowResult& result)
 {
-  const int facets = result.dimension + 1;
   const std::size_t nv = result.vertices.size ();
-
-  // Incident cells of every vertex (compressed rows, built by counting).
-  std::vector<std::size_t> first (nv + 1, 0);
-  for (const FlowCell& cell : result.cells)
-    for (int i = 0; i < facets; ++i)
-      ++first[static_cast<std::size_t> (cell.vertices[i]) + 1];
-  for (std::size_t v = 0; v < nv; ++v)
-    first[v + 1] += first[v];
-  std::vector<int> incident (first[nv]);
-  std::vector<std::size_t> fill (first.begin (), first.end () - 1);
-  for (std::size_t c = 0; c < result.cells.size (); ++c)
-    for (int i = 0; i < facets; ++i)
-      incident[fill[static_cast<std::size_t> (result.cells[c].vertices[i])]++] = static_cast<int> (c);
+  const VertexIncidence inc = vertexIncidence (result.cells, nv, result.dimension);
+  std::vector<int> feature_of_segment (result.segments.size (), -1);
+  for (std::size_t k = 0; k < result.features.size (); ++k)
+    feature_of_segment[static_cast<std::size_t> (result.features[k])] = static_cast<int> (k);
 
   // Per vertex: total incident volume per segment, the largest wins (ties: lower segment id).
   std::vector<std::uint32_t> vertex_label (nv, kNoSegment);
@@ -34,12 +26,15 @@ labelPoints (FlowResult& result)
   for (std::size_t v = 0; v < nv; ++v)
   {
     sums.clear ();
-    for (std::size_t k = first[v]; k < first[v + 1]; ++k)
+    for (std::size_t k = inc.first[v]; k < inc.first[v + 1]; ++k)
     {
-      const FlowCell& cell = result.cells[static_cast<std::size_t> (incident[k])];
-      auto it = std::find_if (sums.begin (), sums.end (), [&] (const auto& e) { return e.first == cell.segment; });
+      const FlowCell& cell = result.cells[static_cast<std::size_t> (inc.cells[k])];
+      const int feature = feature_of_segment[static_cast<std::size_t> (cell.segment)];
+      if (feature < 0)
+        continue;
+      auto it = std::find_if (sums.begin (), sums.end (), [&] (const auto& e) { return e.first == feature; });
       if (it == sums.end ())
-        sums.emplace_back (cell.segment, cell.volume);
+        sums.emplace_back (feature, cell.volume);
       else
         it->second += cell.volume;
     }
@@ -66,7 +61,7 @@ labelPoints (FlowResult& result)
     const std::uint32_t label = vertex_label[static_cast<std::size_t> (v)];
     result.point_labels[i] = label;
     if (label != kNoSegment)
-      ++result.segments[label].point_count;
+      ++result.segments[static_cast<std::size_t> (result.features[label])].point_count;
   }
 }
 

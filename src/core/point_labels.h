@@ -9,10 +9,10 @@
 namespace pcl_flowseg {
 namespace core {
 
-/** \brief Labels each input point with the segment holding the largest total volume among the
-  * point's incident cells (ties: the lower segment id), fills FlowResult::point_labels and
-  * FlowSegment::point_count. Non-finite points get kNoSegment; duplicates share their vertex's
-  * label. */
+/** \brief Labels each input point with the feature (FlowResult::features) holding the largest
+  * total volume among the point's incident cells of the reported side (ties: the lower feature),
+  * fills FlowResult::point_labels and FlowSegment::point_count. Non-finite points and points with
+  * no incident cell in a feature get kNoSegment; duplicates share their vertex's label. */
 void
 labelPoints (FlowResult& result);
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <queue>
 #include <unordered_map>
 
 namespace pcl_flowseg {
@@ -127,16 +128,27 @@ findRoot (std::vector<int>& parent, int x)
 void
 mergeManifolds (double rho, FlowResult& result)
 {
+  const bool sided = result.interior.computed;
   const int m = static_cast<int> (result.manifolds.size ());
+  // Side of a manifold: the side of its maximum (the maximum at infinity is outside).
+  std::vector<std::int8_t> side (static_cast<std::size_t> (m), -1);
+  if (sided)
+    for (int k = 0; k < m; ++k)
+    {
+      const FlowSegment& man = result.manifolds[static_cast<std::size_t> (k)];
+      side[static_cast<std::size_t> (k)] =
+          man.flows_to_infinity ? 0 : result.cells[static_cast<std::size_t> (man.maximum.cell)].inside;
+    }
+
   std::vector<int> parent (static_cast<std::size_t> (m));
   std::iota (parent.begin (), parent.end (), 0);
   const double rho2 = rho * rho;
-
   for (const SaddleFacet& s : result.manifold_adjacency)
   {
     const FlowSegment& a = result.manifolds[static_cast<std::size_t> (s.segment_a)];
     const FlowSegment& b = result.manifolds[static_cast<std::size_t> (s.segment_b)];
-    if (a.flows_to_infinity || b.flows_to_infinity)
+    if (a.flows_to_infinity || b.flows_to_infinity ||
+        side[static_cast<std::size_t> (s.segment_a)] != side[static_cast<std::size_t> (s.segment_b)])
       continue;
     const double limit = rho2 * s.squared_radius;
     if (a.maximum.height < limit && b.maximum.height < limit)
@@ -147,19 +159,72 @@ mergeManifolds (double rho, FlowResult& result)
     }
   }
 
-  // Components -> provisional ids, then statistics, then the final order.
   std::vector<int> component (static_cast<std::size_t> (m), -1);
+  std::vector<std::int8_t> component_side;
   int count = 0;
   for (int k = 0; k < m; ++k)
   {
     const int r = findRoot (parent, k);
     if (component[static_cast<std::size_t> (r)] < 0)
+    {
       component[static_cast<std::size_t> (r)] = count++;
+      component_side.push_back (side[static_cast<std::size_t> (r)]);
+    }
     component[static_cast<std::size_t> (k)] = component[static_cast<std::size_t> (r)];
   }
-  std::vector<int> provisional (result.cells.size ());
-  for (std::size_t c = 0; c < result.cells.size (); ++c)
-    provisional[c] = component[static_cast<std::size_t> (result.cells[c].manifold)];
+
+  // Cells on the side of their segment keep it; the others join a segment of their own side.
+  const std::size_t n = result.cells.size ();
+  const int facets = result.dimension + 1;
+  std::vector<int> provisional (n, -1);
+  using Entry = std::pair<double, std::pair<int, int>>; // facet height, (cell, segment)
+  std::priority_queue<Entry> queue;
+  for (std::size_t c = 0; c < n; ++c)
+  {
+    const int comp = component[static_cast<std::size_t> (result.cells[c].manifold)];
+    if (!sided || component_side[static_cast<std::size_t> (comp)] == result.cells[c].inside)
+      provisional[c] = comp;
+  }
+  auto offer = [&] (std::size_t c) {
+    for (int i = 0; i < facets; ++i)
+    {
+      const int nb = result.cells[c].neighbors[i];
+      if (nb >= 0 && provisional[static_cast<std::size_t> (nb)] < 0 &&
+          result.cells[static_cast<std::size_t> (nb)].inside == result.cells[c].inside)
+        queue.emplace (facetSquaredRadius (result.vertices, result.cells[c], i, result.dimension),
+                       std::make_pair (nb, provisional[c]));
+    }
+  };
+  if (sided)
+  {
+    for (std::size_t c = 0; c < n; ++c)
+      if (provisional[c] >= 0)
+        offer (c);
+    std::size_t next_cell = 0;
+    while (true)
+    {
+      while (!queue.empty ())
+      {
+        const Entry e = queue.top ();
+        queue.pop ();
+        const std::size_t c = static_cast<std::size_t> (e.second.first);
+        if (provisional[c] >= 0)
+          continue;
+        provisional[c] = e.second.second;
+        offer (c);
+      }
+      // A region of one side that no segment of that side reaches (its cells all flow across the
+      // boundary) becomes a segment of its own.
+      while (next_cell < n && provisional[next_cell] >= 0)
+        ++next_cell;
+      if (next_cell == n)
+        break;
+      provisional[next_cell] = count++;
+      component_side.push_back (result.cells[next_cell].inside);
+      offer (next_cell);
+    }
+  }
+
   std::vector<FlowSegment> segs = summariseCells (result.cells, provisional, count);
   for (int k = 0; k < m; ++k)
   {
@@ -175,37 +240,68 @@ mergeManifolds (double rho, FlowResult& result)
     if (seg.maxima.size () == man.maxima.size () || man.maximum.height > seg.maximum.height)
       seg.maximum = man.maximum;
   }
+  for (int g = 0; g < count; ++g)
+    segs[static_cast<std::size_t> (g)].interior = component_side[static_cast<std::size_t> (g)];
+  // Segments without a maximum of their own: report their highest cell.
+  for (std::size_t c = 0; c < n; ++c)
+  {
+    FlowSegment& seg = segs[static_cast<std::size_t> (provisional[c])];
+    if (seg.maxima.empty () && !seg.flows_to_infinity &&
+        (seg.maximum.cell < 0 || result.cells[c].squared_radius > seg.maximum.height))
+    {
+      seg.maximum.cell = static_cast<int> (c);
+      seg.maximum.height = result.cells[c].squared_radius;
+    }
+  }
+  for (auto& seg : segs)
+    if (seg.maxima.empty () && !seg.flows_to_infinity && seg.maximum.cell >= 0)
+      seg.maximum.location = result.cells[static_cast<std::size_t> (seg.maximum.cell)].centroid;
 
-  // Finite segments by decreasing volume (then height), the one at infinity last.
-  std::vector<int> order (static_cast<std::size_t> (count));
-  std::iota (order.begin (), order.end (), 0);
+  // Interior segments by decreasing volume (then height), then exterior ones, infinity last.
+  std::vector<int> order;
+  for (int g = 0; g < count; ++g)
+    if (segs[static_cast<std::size_t> (g)].cell_count > 0) // the one at infinity may have lost all
+      order.push_back (g);
   std::sort (order.begin (), order.end (), [&] (int x, int y) {
     const FlowSegment& a = segs[static_cast<std::size_t> (x)];
     const FlowSegment& b = segs[static_cast<std::size_t> (y)];
     if (a.flows_to_infinity != b.flows_to_infinity)
       return b.flows_to_infinity;
+    if (a.interior != b.interior)
+      return a.interior > b.interior;
     if (a.volume != b.volume)
       return a.volume > b.volume;
     if (a.maximum.height != b.maximum.height)
       return a.maximum.height > b.maximum.height;
     return x < y;
   });
-  std::vector<int> rank (static_cast<std::size_t> (count));
+  std::vector<int> rank (static_cast<std::size_t> (count), -1);
   result.segments.clear ();
-  result.segments.reserve (static_cast<std::size_t> (count));
-  for (int r = 0; r < count; ++r)
+  result.segments.reserve (order.size ());
+  for (int r = 0; r < static_cast<int> (order.size ()); ++r)
   {
     rank[static_cast<std::size_t> (order[static_cast<std::size_t> (r)])] = r;
     result.segments.push_back (segs[static_cast<std::size_t> (order[static_cast<std::size_t> (r)])]);
     std::sort (result.segments.back ().maxima.begin (), result.segments.back ().maxima.end ());
   }
-  std::vector<int> segment_of_cell (result.cells.size ());
-  for (std::size_t c = 0; c < result.cells.size (); ++c)
+  std::vector<int> segment_of_cell (n);
+  for (std::size_t c = 0; c < n; ++c)
   {
     result.cells[c].segment = rank[static_cast<std::size_t> (provisional[c])];
     segment_of_cell[c] = result.cells[c].segment;
   }
   result.segment_adjacency = highestSharedFacets (result, segment_of_cell);
+
+  result.features.clear ();
+  for (int k = 0; k < static_cast<int> (result.segments.size ()); ++k)
+  {
+    const FlowSegment& seg = result.segments[static_cast<std::size_t> (k)];
+    const bool wanted = !sided || result.feature_side == FeatureSide::Both ||
+                        (result.feature_side == FeatureSide::Interior && seg.interior == 1) ||
+                        (result.feature_side == FeatureSide::Exterior && seg.interior == 0);
+    if (wanted)
+      result.features.push_back (k);
+  }
 }
 
 } // namespace core

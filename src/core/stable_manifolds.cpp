@@ -4,6 +4,8 @@
  */
 #include "stable_manifolds.h"
 
+#include "cell_geometry.h"
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -15,15 +17,6 @@ namespace {
 constexpr int kRootInfinity = -2;
 constexpr int kRootUnknown = -1;
 
-/** Facet of \a from whose neighbour is \a to. */
-int
-facetTowards (const FlowCell& from, int to, int facets)
-{
-  for (int i = 0; i < facets; ++i)
-    if (from.neighbors[i] == to)
-      return i;
-  return -1;
-}
 } // namespace
 
 StableManifolds
@@ -110,7 +103,7 @@ computeStableManifolds (std::vector<FlowCell>& cells, int dimension)
       if (nb == kInfiniteCell)
         continue;
       const FlowCell& other = cells[static_cast<std::size_t> (nb)];
-      const int back = facetTowards (other, c, facets);
+      const int back = facetTowards (other, c, dimension);
       if (back >= 0 && (other.flow_mask >> back & 1u) && --pending[static_cast<std::size_t> (nb)] == 0)
         ready.push_back (nb);
     }

@@ -7,6 +7,7 @@
 #include <pcl_flowseg/flow_segmentation.h>
 
 #include <pcl/console/print.h>
+#include <pcl/type_traits.h>
 
 namespace pcl {
 
@@ -32,13 +33,22 @@ FlowSegmentation<PointT>::segment (std::vector<PointIndices>& segments)
   std::vector<Eigen::Vector3d> points;
   points.reserve (indices_->size ());
   used_indices_.reserve (indices_->size ());
+  pcl_flowseg::FlowParameters params = params_;
+  params.normals.clear ();
   for (const auto idx : *indices_)
   {
     const PointT& p = (*input_)[idx];
     points.emplace_back (p.x, p.y, p.z);
     used_indices_.push_back (idx);
   }
-  const pcl_flowseg::Status status = pcl_flowseg::runFlowSegmentation (points, params_, result_, progress_);
+  if (use_normals_)
+    copyNormals (params.normals);
+  if (use_sensor_origin_)
+  {
+    params.use_viewpoint = true;
+    params.viewpoint = input_->sensor_origin_.template head<3> ().template cast<double> ();
+  }
+  const pcl_flowseg::Status status = pcl_flowseg::runFlowSegmentation (points, params, result_, progress_);
   deinitCompute ();
   if (!status.ok)
   {
@@ -72,16 +82,31 @@ FlowSegmentation<PointT>::remerge (double rho, std::vector<PointIndices>& segmen
 template <typename PointT> void
 FlowSegmentation<PointT>::extractIndices (std::vector<PointIndices>& segments) const
 {
-  segments.assign (result_.segments.size (), PointIndices ());
+  segments.assign (result_.features.size (), PointIndices ());
   for (auto& s : segments)
     s.header = input_->header;
   for (std::size_t k = 0; k < segments.size (); ++k)
-    segments[k].indices.reserve (result_.segments[k].point_count);
+    segments[k].indices.reserve (result_.segments[static_cast<std::size_t> (result_.features[k])].point_count);
   for (std::size_t i = 0; i < result_.point_labels.size (); ++i)
   {
     const std::uint32_t label = result_.point_labels[i];
     if (label != pcl_flowseg::kNoSegment)
       segments[label].indices.push_back (used_indices_[i]);
+  }
+}
+
+template <typename PointT> void
+FlowSegmentation<PointT>::copyNormals (std::vector<Eigen::Vector3d>& normals) const
+{
+  normals.clear ();
+  if constexpr (pcl::traits::has_normal_v<PointT>)
+  {
+    normals.reserve (indices_->size ());
+    for (const auto idx : *indices_)
+    {
+      const PointT& p = (*input_)[idx];
+      normals.emplace_back (p.normal_x, p.normal_y, p.normal_z);
+    }
   }
 }
 
