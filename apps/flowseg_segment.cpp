@@ -30,16 +30,26 @@ its distance function (Dey, Giesen, Goswami 2003).
 INPUT  .pcd | .ply | .xyz/.txt/.csv (x y [z] per line) | .off/.obj (mesh vertices)
 
 Options:
-  -r, --rho R          merge threshold rho > 0 (default )" << pcl_flowseg::kDefaultRho << R"(); < 1 merges nothing
-  -d, --dimension D    auto | 2 | 3 (default auto: 2D when all points lie on one plane)
-  -o, --output PREFIX  output prefix (default: INPUT without its extension)
-      --binary         write the label PCD in binary (default ASCII)
-  -q, --quiet          no progress or summary on stderr
-  -h, --help           this help
+  -r, --rho R            merge threshold rho > 0 (default )" << pcl_flowseg::kDefaultRho << R"(); < 1 merges nothing
+  -d, --dimension D      auto | 2 | 3 (default auto: 2D when all points lie on one plane)
+  -f, --features SIDE    interior | exterior | both (default interior: the shape's features)
+      --no-interior      skip interior/exterior separation: the paper's raw segmentation of the
+                         whole convex hull, every segment reported
+      --denoise MODE     auto | off | on: smooth noisy samples before separating interior and
+                         exterior (default auto: when the surface variation shows noise)
+      --use-normals      use the file's normals (must point outwards) as in/out evidence
+      --viewpoint X,Y,Z  sensor position of a single-view scan: space in front is outside
+      --use-sensor-origin  take the viewpoint from the PCD file's VIEWPOINT
+  -o, --output PREFIX    output prefix (default: INPUT without its extension)
+      --binary           write the label PCD in binary (default ASCII)
+      --no-surface       do not write PREFIX.surface.ply
+  -q, --quiet            no progress or summary on stderr
+  -h, --help             this help
 
-Writes PREFIX.labels.pcd (PointXYZL, one point per input point, in input order; label
-4294967295 = no segment), PREFIX.json (counts, segments, adjacency, timings in ms) and
-PREFIX.ply (points, and 2D triangles, coloured by segment; grey = flows out of the hull).
+Writes PREFIX.labels.pcd (PointXYZL, one point per input point, in input order; label = feature
+index, 4294967295 = none), PREFIX.json (counts, features, segments, adjacency, interior/exterior
+summary, timings in ms), PREFIX.ply (points, and 2D triangles, coloured by feature) and
+PREFIX.surface.ply (the reconstructed surface: 3D triangles, 2D interior triangles and the curve).
 Exit status: 0 on success, 1 when the input cannot be read or segmented, 2 on bad options.
 )";
 }
@@ -75,7 +85,11 @@ main (int argc, char** argv)
   std::string input, prefix;
   double rho = pcl_flowseg::kDefaultRho;
   int dimension = 0;
-  bool binary = false, quiet = false;
+  bool binary = false, quiet = false, separate = true, use_normals = false, use_sensor_origin = false, surface = true;
+  pcl_flowseg::FeatureSide side = pcl_flowseg::FeatureSide::Interior;
+  pcl_flowseg::Denoising denoise = pcl_flowseg::Denoising::Automatic;
+  bool has_viewpoint = false;
+  Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero ();
 
   for (int i = 1; i < argc; ++i)
   {
@@ -111,6 +125,42 @@ main (int argc, char** argv)
       if (!value (prefix) || prefix.empty ())
         return usageError ("--output needs a prefix");
     }
+    else if (arg == "-f" || arg == "--features")
+    {
+      if (!value (v))
+        return usageError ("--features needs interior, exterior or both");
+      if (v == "interior") side = pcl_flowseg::FeatureSide::Interior;
+      else if (v == "exterior") side = pcl_flowseg::FeatureSide::Exterior;
+      else if (v == "both") side = pcl_flowseg::FeatureSide::Both;
+      else return usageError ("--features must be interior, exterior or both, got '" + v + "'");
+    }
+    else if (arg == "--no-interior")
+      separate = false;
+    else if (arg == "--denoise")
+    {
+      if (!value (v))
+        return usageError ("--denoise needs auto, off or on");
+      if (v == "auto") denoise = pcl_flowseg::Denoising::Automatic;
+      else if (v == "off") denoise = pcl_flowseg::Denoising::Off;
+      else if (v == "on") denoise = pcl_flowseg::Denoising::Always;
+      else return usageError ("--denoise must be auto, off or on, got '" + v + "'");
+    }
+    else if (arg == "--use-normals")
+      use_normals = true;
+    else if (arg == "--viewpoint")
+    {
+      double x, y, z;
+      char c1 = 0, c2 = 0, extra = 0;
+      if (!value (v) || std::sscanf (v.c_str (), "%lf%c%lf%c%lf%c", &x, &c1, &y, &c2, &z, &extra) != 5 || c1 != ',' ||
+          c2 != ',' || !std::isfinite (x) || !std::isfinite (y) || !std::isfinite (z))
+        return usageError ("--viewpoint needs X,Y,Z (three finite numbers), got '" + v + "'");
+      viewpoint = Eigen::Vector3f (static_cast<float> (x), static_cast<float> (y), static_cast<float> (z));
+      has_viewpoint = true;
+    }
+    else if (arg == "--use-sensor-origin")
+      use_sensor_origin = true;
+    else if (arg == "--no-surface")
+      surface = false;
     else if (arg == "--binary")
       binary = true;
     else if (arg == "-q" || arg == "--quiet")
@@ -124,27 +174,59 @@ main (int argc, char** argv)
   }
   if (input.empty ())
     return usageError ("no input file given");
+  if (has_viewpoint && use_sensor_origin)
+    return usageError ("--viewpoint and --use-sensor-origin exclude each other");
+  if (!separate && (use_normals || has_viewpoint || use_sensor_origin || side != pcl_flowseg::FeatureSide::Interior))
+    return usageError ("--no-interior excludes --features, --use-normals, --viewpoint and --use-sensor-origin");
   if (prefix.empty ())
     prefix = stripExtension (input);
   if (quiet)
     pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
 
   const auto t0 = std::chrono::steady_clock::now ();
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
-  const pcl_flowseg::Status loaded = pcl_flowseg::loadPointCloud (input, *cloud);
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  std::vector<Eigen::Vector3d> normals;
+  const pcl_flowseg::Status loaded = pcl_flowseg::loadPointCloud (input, xyz, normals);
   if (!loaded)
   {
     std::cerr << "flowseg_segment: " << loaded.message << "\n";
     return 1;
   }
+  if (use_normals && normals.empty ())
+  {
+    std::cerr << "flowseg_segment: " << input << ": --use-normals given, but the file has no normals\n";
+    return 1;
+  }
+  // PointNormal carries the optional normals to the segmentation.
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud (new pcl::PointCloud<pcl::PointNormal>);
+  cloud->resize (xyz.size ());
+  for (std::size_t i = 0; i < xyz.size (); ++i)
+  {
+    pcl::PointNormal& p = (*cloud)[i];
+    p.x = xyz[i].x;
+    p.y = xyz[i].y;
+    p.z = xyz[i].z;
+    const Eigen::Vector3d n = normals.empty () ? Eigen::Vector3d::Zero () : normals[i];
+    p.normal_x = static_cast<float> (n.x ());
+    p.normal_y = static_cast<float> (n.y ());
+    p.normal_z = static_cast<float> (n.z ());
+  }
+  cloud->sensor_origin_ = xyz.sensor_origin_;
+  if (has_viewpoint)
+    cloud->sensor_origin_ = Eigen::Vector4f (viewpoint.x (), viewpoint.y (), viewpoint.z (), 0.0f);
   const double read_ms = std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
   if (!quiet)
     std::cerr << "read " << cloud->size () << " points from " << input << " (" << read_ms << " ms)\n";
 
-  pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  pcl::FlowSegmentation<pcl::PointNormal> seg;
   seg.setInputCloud (cloud);
   seg.setRho (rho);
   seg.setDimension (dimension);
+  seg.setSeparateInterior (separate);
+  seg.setFeatureSide (side);
+  seg.setDenoising (denoise);
+  seg.setUseNormals (use_normals);
+  seg.setUseSensorOrigin (has_viewpoint || use_sensor_origin);
   if (!quiet)
     seg.setProgressCallback ([] (const std::string& stage, double f) {
       std::cerr << "  [" << static_cast<int> (f * 100) << "%] " << stage << "\n";
@@ -163,9 +245,12 @@ main (int argc, char** argv)
   info.input = input;
   info.rho = rho;
   info.read_ms = read_ms;
-  for (const auto& st : {pcl_flowseg::writeLabelCloud (prefix + ".labels.pcd", labels, binary),
-                         pcl_flowseg::writeSegmentationJson (prefix + ".json", result, info),
-                         pcl_flowseg::writeSegmentationPly (prefix + ".ply", result, labels)})
+  std::vector<pcl_flowseg::Status> written = {pcl_flowseg::writeLabelCloud (prefix + ".labels.pcd", labels, binary),
+                                              pcl_flowseg::writeSegmentationJson (prefix + ".json", result, info),
+                                              pcl_flowseg::writeSegmentationPly (prefix + ".ply", result, labels)};
+  if (surface && separate)
+    written.push_back (pcl_flowseg::writeSurfacePly (prefix + ".surface.ply", result));
+  for (const auto& st : written)
   {
     if (!st)
     {
@@ -177,18 +262,26 @@ main (int argc, char** argv)
   if (!quiet)
   {
     const auto& t = result.timings;
-    std::size_t finite_segments = 0;
+    std::size_t interior = 0, unlabelled = 0;
     for (const auto& s : result.segments)
-      finite_segments += s.flows_to_infinity ? 0 : 1;
+      interior += s.interior == 1;
+    for (std::size_t i = 0; i < result.point_labels.size (); ++i)
+      unlabelled += result.point_labels[i] == pcl_flowseg::kNoSegment && result.point_to_vertex[i] >= 0;
     std::fprintf (stderr,
                   "%dD: %zu points (%zu non-finite, %zu duplicates), %zu cells, %zu maxima, "
-                  "%zu segments after merging with rho=%g (%zu finite + %s)\n",
+                  "%zu segments after merging with rho=%g (%zu interior), %zu features reported, %zu points unlabelled\n",
                   result.dimension, result.input_points, result.non_finite_points, result.duplicate_points,
-                  result.cells.size (), result.maxima.size (), result.segments.size (), rho, finite_segments,
-                  finite_segments < result.segments.size () ? "1 at infinity" : "none at infinity");
-    std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, delaunay %.1f, flow %.1f, merge %.1f, labels %.1f, total %.1f\n",
-                  read_ms, t.preparation_ms, t.delaunay_ms, t.flow_ms, t.merge_ms, t.labels_ms, t.total_ms);
-    std::fprintf (stderr, "wrote %s.labels.pcd, %s.json, %s.ply\n", prefix.c_str (), prefix.c_str (), prefix.c_str ());
+                  result.cells.size (), result.maxima.size (), result.segments.size (), rho, interior,
+                  result.features.size (), unlabelled);
+    if (result.interior.computed)
+      std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s, surface variation %.4f, %d smoothing pass(es)\n",
+                    result.interior.inside_volume, result.interior.inside_cells, result.interior.boundary_facets,
+                    result.interior.closed ? "closed" : "NOT closed", result.interior.manifold ? "manifold" : "not manifold",
+                    result.interior.surface_variation, result.interior.smoothing_passes);
+    std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, delaunay %.1f, flow %.1f, interior %.1f, merge %.1f, labels %.1f, total %.1f\n",
+                  read_ms, t.preparation_ms, t.delaunay_ms, t.flow_ms, t.interior_ms, t.merge_ms, t.labels_ms, t.total_ms);
+    std::fprintf (stderr, "wrote %s.labels.pcd, %s.json, %s.ply%s\n", prefix.c_str (), prefix.c_str (), prefix.c_str (),
+                  surface && separate ? (", " + prefix + ".surface.ply").c_str () : "");
   }
   return 0;
 }

@@ -71,7 +71,7 @@ where (const std::string& path, std::size_t line)
 }
 
 Status
-loadText (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXYZ>& cloud)
+loadText (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
 {
   std::string line;
   std::vector<double> v;
@@ -93,6 +93,8 @@ loadText (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointX
                             std::to_string (columns));
     cloud.push_back (pcl::PointXYZ (static_cast<float> (v[0]), static_cast<float> (v[1]),
                                     v.size () > 2 ? static_cast<float> (v[2]) : 0.0f));
+    if (v.size () >= 6)
+      normals.emplace_back (v[3], v[4], v[5]);
   }
   if (in.bad ())
     return Status::error (path + ": read error");
@@ -261,7 +263,7 @@ checkPcdHeader (const std::string& path)
 }
 
 Status
-loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud)
+loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
 {
   if (pcd)
   {
@@ -270,22 +272,30 @@ loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& 
       return header;
   }
   pcl::PCLPointCloud2 blob;
-  const int rc = pcd ? pcl::io::loadPCDFile (path, blob) : pcl::io::loadPLYFile (path, blob);
+  Eigen::Vector4f origin = Eigen::Vector4f::Zero ();
+  Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity ();
+  const int rc = pcd ? pcl::io::loadPCDFile (path, blob, origin, orientation) : pcl::io::loadPLYFile (path, blob);
   if (rc < 0)
     return Status::error (path + ": not a readable " + std::string (pcd ? "PCD" : "PLY") + " file");
   // Coordinates are read field by field in whatever numeric type the file uses (PLY files often
   // store doubles, which pcl::fromPCLPointCloud2 would not convert into PointXYZ).
   const pcl::PCLPointField* axis[3] = {nullptr, nullptr, nullptr};
+  const pcl::PCLPointField* normal[3] = {nullptr, nullptr, nullptr};
   for (const auto& f : blob.fields)
     for (int k = 0; k < 3; ++k)
+    {
       if (f.name == std::string (1, "xyz"[k]))
         axis[k] = &f;
+      if (f.name == std::string ("normal_") + "xyz"[k] || f.name == std::string ("n") + "xyz"[k])
+        normal[k] = &f;
+    }
+  const bool has_normals = normal[0] && normal[1] && normal[2];
   if (!axis[0] || !axis[1])
     return Status::error (path + ": has no x/y fields (not a point cloud)");
   const std::size_t n = static_cast<std::size_t> (blob.width) * blob.height;
   if (blob.point_step == 0 || blob.data.size () < n * blob.point_step)
     return Status::error (path + ": point data shorter than its header says");
-  for (const auto* f : axis)
+  for (const auto* f : {axis[0], axis[1], axis[2], normal[0], normal[1], normal[2]})
     if (f && f->offset + pcl::getFieldSize (f->datatype) > blob.point_step)
       return Status::error (path + ": field '" + f->name + "' lies outside the point record");
   auto read = [&] (const pcl::PCLPointField* f, const std::uint8_t* record) -> double {
@@ -310,7 +320,11 @@ loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& 
     const std::uint8_t* record = blob.data.data () + i * blob.point_step;
     cloud.push_back (pcl::PointXYZ (static_cast<float> (read (axis[0], record)), static_cast<float> (read (axis[1], record)),
                                     static_cast<float> (read (axis[2], record))));
+    if (has_normals)
+      normals.emplace_back (read (normal[0], record), read (normal[1], record), read (normal[2], record));
   }
+  cloud.sensor_origin_ = origin;
+  cloud.sensor_orientation_ = orientation;
   return Status::success ();
 }
 
@@ -326,7 +340,15 @@ isSupportedPointFile (const std::string& path)
 Status
 loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
 {
+  std::vector<Eigen::Vector3d> normals;
+  return loadPointCloud (path, cloud, normals);
+}
+
+Status
+loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
+{
   cloud.clear ();
+  normals.clear ();
   const std::string ext = lowerExtension (path);
   if (!isSupportedPointFile (path))
     return Status::error (path + ": unknown file type '." + ext +
@@ -339,20 +361,23 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
   if (ext == "pcd" || ext == "ply")
   {
     in.close ();
-    status = loadWithPcl (path, ext == "pcd", cloud);
+    status = loadWithPcl (path, ext == "pcd", cloud, normals);
   }
   else if (ext == "off")
     status = loadOff (path, in, cloud);
   else if (ext == "obj")
     status = loadObj (path, in, cloud);
   else
-    status = loadText (path, in, cloud);
+    status = loadText (path, in, cloud, normals);
 
   if (!status.ok)
   {
     cloud.clear ();
+    normals.clear ();
     return status;
   }
+  if (normals.size () != cloud.size ())
+    normals.clear ();
   if (cloud.empty ())
     return Status::error (path + ": contains no points");
   cloud.width = static_cast<std::uint32_t> (cloud.size ());

@@ -134,11 +134,31 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
     out << "  \"maxima\": " << r.maxima.size () << ",\n";
     out << "  \"stable_manifolds\": " << r.manifolds.size () << ",\n";
     out << "  \"segment_count\": " << r.segments.size () << ",\n";
+    std::size_t unlabelled = 0;
+    for (std::size_t i = 0; i < r.point_labels.size (); ++i)
+      unlabelled += r.point_labels[i] == kNoSegment && r.point_to_vertex[i] >= 0;
+    out << "  \"unlabelled_points\": " << unlabelled << ",\n";
+    const char* side = r.feature_side == FeatureSide::Interior ? "interior" : r.feature_side == FeatureSide::Exterior ? "exterior" : "both";
+    out << "  \"features\": {\"side\": \"" << (r.interior.computed ? side : "all") << "\", \"segments\": [";
+    for (std::size_t k = 0; k < r.features.size (); ++k)
+      out << (k ? ", " : "") << r.features[k];
+    out << "]},\n";
+    const InteriorReport& in = r.interior;
+    out << "  \"interior\": {\"computed\": " << (in.computed ? "true" : "false");
+    if (in.computed)
+      out << ", \"inside_volume\": " << num (in.inside_volume) << ", \"inside_cells\": " << in.inside_cells
+          << ", \"boundary_facets\": " << in.boundary_facets << ", \"closed\": " << (in.closed ? "true" : "false")
+          << ", \"manifold\": " << (in.manifold ? "true" : "false") << ", \"nonmanifold_edges\": " << in.nonmanifold_edges
+          << ", \"nonmanifold_vertices\": " << in.nonmanifold_vertices << ", \"vertices_off_boundary\": " << in.vertices_off_boundary
+          << ", \"surface_variation\": " << num (in.surface_variation) << ", \"smoothing_passes\": " << in.smoothing_passes
+          << ", \"ray_cells\": " << in.ray_cells;
+    out << "},\n";
     out << "  \"segments\": [";
     for (std::size_t k = 0; k < r.segments.size (); ++k)
     {
       const FlowSegment& s = r.segments[k];
       out << (k ? ",\n" : "\n") << "    {\"id\": " << k << ", \"flows_to_infinity\": " << (s.flows_to_infinity ? "true" : "false")
+          << ", \"interior\": " << (s.interior == 1 ? "true" : s.interior == 0 ? "false" : "null")
           << ", \"volume\": " << num (s.volume) << ", \"centroid\": " << vec (s.centroid, d)
           << ", \"point_count\": " << s.point_count << ", \"cell_count\": " << s.cell_count
           << ", \"maxima_merged\": " << s.maxima.size () << ", \"maximum_height\": " << num (s.maximum.height);
@@ -157,7 +177,8 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
     out << "\n  ],\n";
     const StageTimings& t = r.timings;
     out << "  \"timings_ms\": {\"read\": " << num (info.read_ms) << ", \"preparation\": " << num (t.preparation_ms)
-        << ", \"delaunay\": " << num (t.delaunay_ms) << ", \"flow\": " << num (t.flow_ms) << ", \"merge\": " << num (t.merge_ms)
+        << ", \"delaunay\": " << num (t.delaunay_ms) << ", \"flow\": " << num (t.flow_ms)
+        << ", \"interior\": " << num (t.interior_ms) << ", \"merge\": " << num (t.merge_ms)
         << ", \"labels\": " << num (t.labels_ms) << ", \"total\": " << num (t.total_ms) << "},\n";
     out << "  \"warnings\": [";
     for (std::size_t k = 0; k < r.warnings.size (); ++k)
@@ -174,7 +195,12 @@ writeSegmentationPly (const std::string& path, const FlowResult& r, const pcl::P
     std::ofstream out (tmp, std::ios::binary);
     if (!out)
       return Status::error ("cannot create file");
-    auto isInfinity = [&] (std::uint32_t l) { return l != kNoSegment && l < r.segments.size () && r.segments[l].flows_to_infinity; };
+    auto isInfinity = [&] (std::uint32_t l) {
+      return l != kNoSegment && l < r.features.size () && r.segments[static_cast<std::size_t> (r.features[l])].flows_to_infinity;
+    };
+    std::vector<int> feature_of_segment (r.segments.size (), -1);
+    for (std::size_t k = 0; k < r.features.size (); ++k)
+      feature_of_segment[static_cast<std::size_t> (r.features[k])] = static_cast<int> (k);
     const bool faces = r.dimension == 2;
     // Points with non-finite coordinates cannot be drawn: they are left out of the PLY (and
     // counted in the JSON summary); faces index the first written copy of each vertex.
@@ -191,7 +217,7 @@ writeSegmentationPly (const std::string& path, const FlowResult& r, const pcl::P
       if (v >= 0 && vertex_point[static_cast<std::size_t> (v)] < 0)
         vertex_point[static_cast<std::size_t> (v)] = written[i];
     }
-    out << "ply\nformat ascii 1.0\ncomment pcl_flowseg segmentation: colour = segment, grey = flows to infinity\n";
+    out << "ply\nformat ascii 1.0\ncomment pcl_flowseg segmentation: colour = feature, grey = none or flows to infinity\n";
     out << "element vertex " << count << "\n";
     out << "property float x\nproperty float y\nproperty float z\n";
     out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
@@ -215,13 +241,98 @@ writeSegmentationPly (const std::string& path, const FlowResult& r, const pcl::P
     {
       for (const FlowCell& cell : r.cells)
       {
-        const std::uint32_t s = static_cast<std::uint32_t> (cell.segment);
-        const auto c = segmentColour (s, r.segments[s].flows_to_infinity);
+        // Triangles of a reported feature in its colour (as its points), the others grey.
+        const int feature = feature_of_segment[static_cast<std::size_t> (cell.segment)];
+        const auto c = feature < 0 ? segmentColour (kNoSegment) : segmentColour (static_cast<std::uint32_t> (feature), isInfinity (static_cast<std::uint32_t> (feature)));
         out << "3";
         for (int k = 0; k < 3; ++k)
           out << " " << vertex_point[static_cast<std::size_t> (cell.vertices[k])];
         out << " " << int (c[0]) << " " << int (c[1]) << " " << int (c[2]) << "\n";
       }
+    }
+    return finish (out);
+  });
+}
+
+std::vector<std::array<int, 3>>
+boundaryFacets (const FlowResult& r)
+{
+  std::vector<std::array<int, 3>> out;
+  if (!r.interior.computed)
+    return out;
+  const int d = r.dimension, f = d + 1;
+  for (const FlowCell& c : r.cells)
+  {
+    if (c.inside != 1)
+      continue;
+    for (int i = 0; i < f; ++i)
+    {
+      const int nb = c.neighbors[i];
+      if (nb >= 0 && r.cells[static_cast<std::size_t> (nb)].inside == 1)
+        continue;
+      std::array<int, 3> t{{c.vertices[(i + 1) % f], c.vertices[(i + 2) % f], d == 3 ? c.vertices[(i + 3) % f] : -1}};
+      // Orient away from the cell: the apex must lie behind the facet.
+      const Eigen::Vector3d& apex = r.vertices[static_cast<std::size_t> (c.vertices[i])];
+      const Eigen::Vector3d& a = r.vertices[static_cast<std::size_t> (t[0])];
+      const Eigen::Vector3d& b = r.vertices[static_cast<std::size_t> (t[1])];
+      if (d == 3)
+      {
+        const Eigen::Vector3d& e = r.vertices[static_cast<std::size_t> (t[2])];
+        if ((b - a).cross (e - a).dot (apex - a) > 0)
+          std::swap (t[1], t[2]);
+      }
+      else
+      {
+        // In the cells' plane: the interior (apex) on the left of a -> b.
+        const Eigen::Vector3d normal = (b - a).cross (apex - a);
+        const Eigen::Vector3d& p0 = r.vertices[static_cast<std::size_t> (c.vertices[0])];
+        const Eigen::Vector3d& p1 = r.vertices[static_cast<std::size_t> (c.vertices[1])];
+        const Eigen::Vector3d& p2 = r.vertices[static_cast<std::size_t> (c.vertices[2])];
+        const Eigen::Vector3d plane = (p1 - p0).cross (p2 - p0); // CGAL faces are counter-clockwise
+        if (normal.dot (plane) < 0)
+          std::swap (t[0], t[1]);
+      }
+      out.push_back (t);
+    }
+  }
+  return out;
+}
+
+Status
+writeSurfacePly (const std::string& path, const FlowResult& r)
+{
+  if (!r.interior.computed)
+    return Status::error ("cannot write " + path + ": no interior/exterior separation was run");
+  const auto facets = boundaryFacets (r);
+  return writeFileAtomically (path, [&] (const std::string& tmp) {
+    std::ofstream out (tmp, std::ios::binary);
+    if (!out)
+      return Status::error ("cannot create file");
+    std::size_t inside_cells = 0;
+    for (const FlowCell& c : r.cells)
+      inside_cells += c.inside == 1;
+    out << "ply\nformat ascii 1.0\ncomment pcl_flowseg reconstructed surface (interior/exterior boundary)\n";
+    out << "element vertex " << r.vertices.size () << "\nproperty double x\nproperty double y\nproperty double z\n";
+    if (r.dimension == 3)
+      out << "element face " << facets.size () << "\nproperty list uchar int vertex_indices\n";
+    else
+    {
+      out << "element face " << inside_cells << "\nproperty list uchar int vertex_indices\n";
+      out << "element edge " << facets.size () << "\nproperty int vertex1\nproperty int vertex2\n";
+    }
+    out << "end_header\n" << std::setprecision (17);
+    for (const auto& v : r.vertices)
+      out << v.x () << " " << v.y () << " " << v.z () << "\n";
+    if (r.dimension == 3)
+      for (const auto& t : facets)
+        out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+    else
+    {
+      for (const FlowCell& c : r.cells)
+        if (c.inside == 1)
+          out << "3 " << c.vertices[0] << " " << c.vertices[1] << " " << c.vertices[2] << "\n";
+      for (const auto& e : facets)
+        out << e[0] << " " << e[1] << "\n";
     }
     return finish (out);
   });

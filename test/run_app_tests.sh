@@ -39,13 +39,17 @@ for sample in "$src"/samples/*.pcd; do
   [ "$n" = "$m" ]; check "$name: label PCD has one point per input point ($n vs $m)" $?
   grep -q '^FIELDS x y z label' "$work/$name.labels.pcd"; check "$name: label PCD fields" $?
   head -1 "$work/$name.ply" | grep -q '^ply$'; check "$name: PLY header" $?
+  grep -q '^element face [1-9]' "$work/$name.surface.ply"; check "$name: surface PLY has faces" $?
   if command -v python3 >/dev/null 2>&1; then
     python3 - "$work/$name.json" "$n" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 assert d["points"] == int(sys.argv[2]), "points"
 assert d["segment_count"] == len(d["segments"]) > 0, "segments"
-assert sum(s["point_count"] for s in d["segments"]) == d["points"], "point counts"
+assert sum(s["point_count"] for s in d["segments"]) + d["unlabelled_points"] == d["points"], "point counts"
+assert d["interior"]["computed"] and d["interior"]["closed"], "closed interior"
+assert all(d["segments"][k]["interior"] for k in d["features"]["segments"]), "features are interior"
+assert "interior" in d["timings_ms"], "interior timing"
 assert all(k in d["timings_ms"] for k in ("delaunay", "flow", "merge", "total")), "timings"
 PY
     check "$name: JSON well-formed and consistent" $?
@@ -63,6 +67,18 @@ expect "rho not a number" 2 "rho" -- "$seg" "$src/samples/hand2d.pcd" --rho abc
 expect "rho missing value" 2 "rho" -- "$seg" "$src/samples/hand2d.pcd" --rho
 expect "dimension absurd" 2 "dimension" -- "$seg" "$src/samples/hand2d.pcd" --dimension 5
 expect "unknown option" 2 "unknown option" -- "$seg" "$src/samples/hand2d.pcd" --frobnicate
+expect "features absurd" 2 "features" -- "$seg" "$src/samples/hand2d.pcd" --features sideways
+expect "denoise absurd" 2 "denoise" -- "$seg" "$src/samples/hand2d.pcd" --denoise maybe
+expect "viewpoint malformed" 2 "viewpoint" -- "$seg" "$src/samples/hand2d.pcd" --viewpoint 1,2
+expect "viewpoint not finite" 2 "viewpoint" -- "$seg" "$src/samples/hand2d.pcd" --viewpoint 1,nan,3
+expect "no-interior with features" 2 "excludes" -- "$seg" "$src/samples/hand2d.pcd" --no-interior --features both
+expect "normals missing" 1 "no normals" -- "$seg" "$src/samples/hand2d.pcd" --use-normals -o "$work/nn"
+expect "exterior features" 0 "features reported" -- "$seg" "$src/samples/star2d.pcd" --features exterior -o "$work/ext"
+expect "raw segmentation" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" --no-interior -o "$work/raw"
+[ ! -e "$work/raw.surface.ply" ]; check "raw segmentation writes no surface" $?
+awk 'BEGIN{srand(1)} /^DATA/{d=1;next} d{n=sqrt($1*$1+$2*$2+$3*$3)+1e-12; print $1,$2,$3,$1,$2,$3}' "$src/samples/snowman3d.pcd" > "$work/normals.xyz"
+expect "normals from a text file" 0 "interior:" -- "$seg" "$work/normals.xyz" --use-normals -o "$work/nrm"
+expect "viewpoint" 0 "interior:" -- "$seg" "$src/samples/dumbbell3d.pcd" --viewpoint 0,8,0 -o "$work/vp"
 expect "no input" 2 "no input" -- "$seg"
 
 # --- bad input -----------------------------------------------------------------------------

@@ -87,6 +87,10 @@ public:
   inline void setFeatureSide (pcl_flowseg::FeatureSide side) { params_.features = side; }
   inline pcl_flowseg::FeatureSide getFeatureSide () const { return params_.features; }
 
+  /** \brief Denoising before interior/exterior separation: Automatic (default), Off, Always. */
+  inline void setDenoising (pcl_flowseg::Denoising mode) { params_.denoising = mode; }
+  inline pcl_flowseg::Denoising getDenoising () const { return params_.denoising; }
+
   /** \brief Use the points' normals (point types with normal_x/y/z; they must point outwards)
     * as evidence for interior/exterior. Default false. Ignored for types without normals. */
   inline void setUseNormals (bool use) { use_normals_ = use; }

@@ -10,6 +10,7 @@
 #include <pcl/point_types.h>
 
 #include <string>
+#include <vector>
 
 namespace pcl_flowseg {
 
@@ -23,6 +24,12 @@ namespace pcl_flowseg {
   * Non-finite coordinates are kept (the segmentation skips and counts them). */
 Status
 loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud);
+
+/** \brief As above, and also the normals when the file has them (PCD/PLY fields normal_x/y/z or
+  * nx/ny/nz; text files with 6 or more columns: x y z nx ny nz); \a normals is left empty
+  * otherwise. A PCD file's VIEWPOINT becomes the cloud's sensor_origin_. */
+Status
+loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals);
 
 /** \brief True when loadPointCloud knows the extension of \a path. */
 bool

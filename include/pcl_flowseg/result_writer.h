@@ -51,4 +51,16 @@ Status
 writeSegmentationPly (const std::string& path, const FlowResult& result,
                       const pcl::PointCloud<pcl::PointXYZL>& labels);
 
+/** \brief The interior/exterior boundary as triangles (3D; oriented so that their normals point
+  * out of the interior) or edges (2D; each edge listed with the interior on its left), over the
+  * vertices of \a result. Empty when interior/exterior separation was not run. */
+std::vector<std::array<int, 3>>
+boundaryFacets (const FlowResult& result);
+
+/** \brief Writes the reconstructed surface as a PLY mesh: 3D the boundary triangles, 2D the
+  * interior triangles as faces and the boundary curve as edges. Atomic. Fails when interior/
+  * exterior separation was not run. */
+Status
+writeSurfacePly (const std::string& path, const FlowResult& result);
+
 } // namespace pcl_flowseg
