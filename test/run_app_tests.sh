@@ -107,5 +107,18 @@ expect "generator" 0 "wrote" -- "$gen" --output "$work" --points2d 300 --points3
 [ "$(grep -m1 '^POINTS' "$work/animal3d.pcd" | awk '{print $2}')" = "400" ]; check "generator point count" $?
 expect "generator bad option" 2 "bad or incomplete" -- "$gen" --points2d -5
 
+# --- mesh sampler ----------------------------------------------------------------------------
+smp="$build/apps/flowseg_sample"
+printf 'OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > "$work/tet.off"
+expect "sample a mesh" 0 "wrote" -- "$smp" "$work/tet.off" -n 500 --noise 0.001 -o "$work/tet.pcd"
+[ "$(grep -m1 '^POINTS' "$work/tet.pcd" | awk '{print $2}')" = "500" ]; check "sampler point count" $?
+expect "segment the sampled mesh" 0 "closed" -- "$seg" "$work/tet.pcd" -o "$work/tet"
+expect "sampler missing mesh" 1 "cannot open" -- "$smp" "$work/none.off" -o "$work/x.pcd"
+expect "sampler bad count" 2 "points" -- "$smp" "$work/tet.off" -n 0 -o "$work/x.pcd"
+expect "sampler bad noise" 2 "noise" -- "$smp" "$work/tet.off" --noise -1 -o "$work/x.pcd"
+expect "sampler no output" 2 "output" -- "$smp" "$work/tet.off"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/broken.off"
+expect "sampler corrupt mesh" 1 "vertex" -- "$smp" "$work/broken.off" -o "$work/x.pcd"
+
 echo "apps: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
