@@ -97,6 +97,7 @@ main (int argc, char** argv)
   std::vector<double> counts = {5000, 50000}, noises = {0.0, 0.0025, 0.005};
   std::string only;
   bool verbose = false;
+  pcl_flowseg::Denoising denoising = pcl_flowseg::Denoising::Automatic;
   int smooth_k = 0, smooth_iter = 1;
   for (int i = 1; i < argc; ++i)
   {
@@ -106,10 +107,16 @@ main (int argc, char** argv)
     else if (a == "--noise" && i + 1 < argc) noises = parseList (argv[++i]);
     else if (a == "--only" && i + 1 < argc) only = argv[++i];
     else if (a == "--verbose") verbose = true;
+    else if (a == "--denoise" && i + 1 < argc)
+    {
+      const std::string m = argv[++i];
+      denoising = m == "off" ? pcl_flowseg::Denoising::Off : m == "on" ? pcl_flowseg::Denoising::Always : pcl_flowseg::Denoising::Automatic;
+    }
     else if (a == "--smooth" && i + 2 < argc) { smooth_k = std::atoi (argv[++i]); smooth_iter = std::atoi (argv[++i]); }
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_interior [--meshes DIR] [--points 5000,50000] [--noise 0,0.0025,0.005] [--only NAME]\n"
+                            "                              [--denoise auto|off|on] [--verbose]\n"
                             "  noise: standard deviation as a fraction of the bounding-box diagonal\n");
       return 2;
     }
@@ -123,7 +130,9 @@ main (int argc, char** argv)
   std::printf ("| mesh | points | noise | agreement | closed | manifold | non-manifold edges / vertices | interior ms | total ms |\n");
   std::printf ("|---|---|---|---|---|---|---|---|---|\n");
   struct Summary { double worst = 1.0, sum = 0.0; int runs = 0, closed = 0, manifold = 0; };
-  std::vector<Summary> by_noise (noises.size ());
+  struct PivotRow { std::string mesh; std::vector<std::string> cells; };
+  std::vector<PivotRow> pivot;
+  std::vector<Summary> by_run (counts.size () * noises.size ());
   for (const auto& path : meshes)
   {
     const std::string name = path.substr (path.find_last_of ('/') + 1);
@@ -143,14 +152,17 @@ main (int argc, char** argv)
       continue;
     }
     const double diag = mesh.diagonal ();
-    for (double count : counts)
+    pivot.push_back (PivotRow{name, {}});
+    for (std::size_t ci = 0; ci < counts.size (); ++ci)
       for (std::size_t k = 0; k < noises.size (); ++k)
       {
+        const double count = counts[ci];
         auto pts = pcl_flowseg::sampleMeshSurface (mesh, static_cast<std::size_t> (count), noises[k] * diag, 1);
         if (smooth_k > 0)
           pts = smooth (pts, smooth_k, smooth_iter);
         pcl_flowseg::FlowParameters params;
         params.dimension = pcl_flowseg::DimensionMode::Spatial;
+        params.denoising = denoising;
         pcl_flowseg::FlowResult r;
         const auto status = pcl_flowseg::runFlowSegmentation (pts, params, r);
         if (!status)
@@ -177,7 +189,10 @@ main (int argc, char** argv)
                      100 * share, in.closed ? "yes" : "no", in.manifold ? "yes" : "no", in.nonmanifold_edges,
                      in.nonmanifold_vertices, r.timings.interior_ms, r.timings.total_ms);
         std::fflush (stdout);
-        Summary& s = by_noise[k];
+        char cell[64];
+        std::snprintf (cell, sizeof (cell), "%.2f%s", 100 * share, k == 0 ? (in.manifold ? "" : (in.closed ? " c" : " open")) : "");
+        pivot.back ().cells.push_back (cell);
+        Summary& s = by_run[ci * noises.size () + k];
         s.worst = std::min (s.worst, share);
         s.sum += share;
         ++s.runs;
@@ -185,13 +200,29 @@ main (int argc, char** argv)
         s.manifold += in.manifold;
       }
   }
-  std::printf ("\n| noise | runs | mean agreement | worst agreement | closed | manifold |\n|---|---|---|---|---|---|\n");
-  for (std::size_t k = 0; k < noises.size (); ++k)
+  std::printf ("\nAgreement in %% by points and noise (clean runs: \"c\" = boundary closed but not manifold):\n\n| mesh |");
+  for (double count : counts)
+    for (double noise : noises)
+      std::printf (" %.0fk, %.2f%% |", count / 1000, 100 * noise);
+  std::printf ("\n|---|");
+  for (std::size_t k = 0; k < counts.size () * noises.size (); ++k)
+    std::printf ("---|");
+  std::printf ("\n");
+  for (const auto& row : pivot)
   {
-    const Summary& s = by_noise[k];
-    if (s.runs)
-      std::printf ("| %.2f%% | %d | %.3f%% | %.3f%% | %d | %d |\n", 100 * noises[k], s.runs, 100 * s.sum / s.runs, 100 * s.worst,
-                   s.closed, s.manifold);
+    std::printf ("| %s |", row.mesh.c_str ());
+    for (const auto& c : row.cells)
+      std::printf (" %s |", c.c_str ());
+    std::printf ("\n");
   }
+  std::printf ("\n| points | noise | runs | mean agreement | worst agreement | closed | manifold |\n|---|---|---|---|---|---|---|\n");
+  for (std::size_t ci = 0; ci < counts.size (); ++ci)
+    for (std::size_t k = 0; k < noises.size (); ++k)
+    {
+      const Summary& s = by_run[ci * noises.size () + k];
+      if (s.runs)
+        std::printf ("| %.0f | %.2f%% | %d | %.3f%% | %.3f%% | %d | %d |\n", counts[ci], 100 * noises[k], s.runs, 100 * s.sum / s.runs,
+                     100 * s.worst, s.closed, s.manifold);
+    }
   return 0;
 }

@@ -12,11 +12,15 @@
 namespace pcl_flowseg {
 namespace core {
 
-/** Median surface variation above which a sample is treated as noisy. Clean samples of the
-  * development meshes measure 0.0001 to 0.009 (5k to 50k points), 0.25% noise 0.011 to 0.12, 0.5%
-  * noise 0.04 to 0.16; below about 0.035 the greedy labelling of the raw sample measured better than
-  * the smoothed route. */
-constexpr double kNoiseVariation = 0.035;
+/** Median surface variation above which a sample may be noisy. Clean samples of the development
+  * meshes measure 0.0001 to 0.009 (5k to 50k points; a CAD part with thin blades, rotor.off at 5k,
+  * 0.064), 0.25% noise 0.011 to 0.12, 0.5% noise 0.04 to 0.16. */
+constexpr double kNoiseVariation = 0.04;
+/** Share of samples off the boundary of the raw labelling above which it is taken as failed.
+  * Clean samples: 0.002 (5k) to 0.05 (rotor.off at 5k); 0.25% noise at 5k: 0.014 to 0.13; 0.5%
+  * noise: 0.10 to 0.93. Where both this and the variation were exceeded, smoothing measured
+  * better; where only one was, the raw labelling did. */
+constexpr double kOffBoundaryShare = 0.08;
 /** Neighbours of the local PCA fits. */
 constexpr int kNoiseNeighbours = 16;
 /** Upper bound on smoothing passes. */

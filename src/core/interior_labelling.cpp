@@ -9,9 +9,6 @@
 #include "denoising.h"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -284,65 +281,69 @@ labelInterior (FlowResult& r, const FlowParameters& params, const std::vector<Ei
 {
   const int d = r.dimension;
   r.interior = InteriorReport ();
-  bool smoothed = false;
-  if (params.denoising != Denoising::Off)
-  {
-    const auto t0 = std::chrono::steady_clock::now ();
-    const Neighbourhoods hoods = nearestNeighbourhoods (r.vertices);
-    double variation = medianVariation (r.vertices, hoods, d);
-    if (std::getenv ("FLOWSEG_DEBUG"))
-      std::fprintf (stderr, "noise estimate %.1f ms\n", std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ());
-    r.interior.surface_variation = variation;
-    if (params.denoising == Denoising::Always || variation > kNoiseVariation)
-    {
-      // Noisy sample: decide in/out on a smoothed copy of the points (the greedy labelling needs
-      // a thin sample), then give every cell the label of the smoothed cell holding its centroid.
-      std::vector<Eigen::Vector3d> points = r.vertices;
-      for (int it = 0; it < kMaxSmoothingPasses; ++it)
-      {
-        points = smoothPoints (points, hoods, d);
-        ++r.interior.smoothing_passes;
-        variation = medianVariation (points, hoods, d);
-        if (variation <= kNoiseVariation)
-          break;
-      }
-      auto tick = [&] (const char* what) {
-        if (std::getenv ("FLOWSEG_DEBUG"))
-          std::fprintf (stderr, "%s %.1f ms\n", what, std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ());
-      };
-      tick ("smoothed");
-      std::vector<FlowCell> smooth_cells;
-      std::string error;
-      if (triangulateWorking (points, d, smooth_cells, error))
-      {
-        tick ("triangulated");
-        r.interior.ray_cells = labelCells (points, smooth_cells, d, params, vertex_normals);
-        tick ("labelled");
-        // Each walk starts at a smoothed cell of the cell's first vertex: the sample moved little.
-        std::vector<int> cell_of_vertex (points.size (), 0);
-        for (std::size_t k = 0; k < smooth_cells.size (); ++k)
-          for (int i = 0; i <= d; ++i)
-            cell_of_vertex[static_cast<std::size_t> (smooth_cells[k].vertices[i])] = static_cast<int> (k);
-        for (FlowCell& c : r.cells)
-        {
-          const int hint = cell_of_vertex[static_cast<std::size_t> (c.vertices[0])];
-          const int found = locateCell (points, smooth_cells, d, c.centroid, hint);
-          c.inside = found >= 0 ? smooth_cells[static_cast<std::size_t> (found)].inside : 0;
-        }
-        tick ("transferred");
-        smoothed = true;
-      }
-      else
-        r.warnings.push_back ("denoising skipped: " + error);
-    }
-  }
-  if (!smoothed)
-    r.interior.ray_cells = labelCells (r.vertices, r.cells, d, params, vertex_normals);
   r.interior.computed = true;
+  // First on the sample as given: right for clean samples, and cheap.
+  if (params.denoising != Denoising::Always)
+  {
+    r.interior.ray_cells = labelCells (r.vertices, r.cells, d, params, vertex_normals);
+    measureBoundary (r);
+  }
+  if (params.denoising == Denoising::Off)
+    return;
+
+  const Neighbourhoods hoods = nearestNeighbourhoods (r.vertices);
+  double variation = medianVariation (r.vertices, hoods, d);
+  r.interior.surface_variation = variation;
+  const double off_boundary = static_cast<double> (r.interior.vertices_off_boundary) / std::max<std::size_t> (1, r.vertices.size ());
+  // Noise shows twice: in the local PCA fits, and in a raw labelling that leaves many samples off
+  // the boundary it finds (undersampled sharp parts raise the first but not the second).
+  if (params.denoising == Denoising::Automatic && (variation <= kNoiseVariation || off_boundary <= kOffBoundaryShare))
+    return;
+
+  // Noisy sample: decide in/out on a smoothed copy of the points (the greedy labelling needs a
+  // thin sample), then give every cell the label of the smoothed cell holding its centroid.
+  std::vector<Eigen::Vector3d> points = r.vertices;
+  for (int it = 0; it < kMaxSmoothingPasses; ++it)
+  {
+    points = smoothPoints (points, hoods, d);
+    ++r.interior.smoothing_passes;
+    variation = medianVariation (points, hoods, d);
+    if (variation <= kNoiseVariation)
+      break;
+  }
+  std::vector<FlowCell> smooth_cells;
+  std::string error;
+  if (!triangulateWorking (points, d, smooth_cells, error))
+  {
+    r.warnings.push_back ("denoising skipped: " + error);
+    r.interior.smoothing_passes = 0;
+    if (params.denoising == Denoising::Always)
+    {
+      r.interior.ray_cells = labelCells (r.vertices, r.cells, d, params, vertex_normals);
+      measureBoundary (r);
+    }
+    return;
+  }
+  r.interior.ray_cells = labelCells (points, smooth_cells, d, params, vertex_normals);
+  // Each walk starts at a smoothed cell of the cell's first vertex: the sample moved little.
+  std::vector<int> cell_of_vertex (points.size (), 0);
+  for (std::size_t k = 0; k < smooth_cells.size (); ++k)
+    for (int i = 0; i <= d; ++i)
+      cell_of_vertex[static_cast<std::size_t> (smooth_cells[k].vertices[i])] = static_cast<int> (k);
+  for (FlowCell& c : r.cells)
+  {
+    const int hint = cell_of_vertex[static_cast<std::size_t> (c.vertices[0])];
+    const int found = locateCell (points, smooth_cells, d, c.centroid, hint);
+    c.inside = found >= 0 ? smooth_cells[static_cast<std::size_t> (found)].inside : 0;
+  }
+  const double surface_variation = r.interior.surface_variation;
+  const int passes = r.interior.smoothing_passes;
+  const std::size_t rays = r.interior.ray_cells;
   measureBoundary (r);
+  r.interior.surface_variation = surface_variation;
+  r.interior.smoothing_passes = passes;
+  r.interior.ray_cells = rays;
 }
-
-
 
 void
 measureBoundary (FlowResult& r)

@@ -25,9 +25,11 @@ namespace core {
   *
   * Labels are propagated greedily from the outside, most confident cell first (as the power
   * crust labels its poles), so that weak, contradictory evidence (slivers, noise) is decided last
-  * by its strongest labelled neighbour. Then the boundary is repaired towards a manifold: cells
-  * whose flip removes non-manifold edges or vertices are flipped (smallest first, bounded
-  * passes). */
+  * by its strongest labelled neighbour.
+  *
+  * Noisy samples (median surface variation above kNoiseVariation and, in Automatic mode, a raw
+  * labelling that leaves more than kOffBoundaryShare of the samples off its boundary) are labelled
+  * on a smoothed copy of the sample, whose labels are transferred by locating the cells' centroids. */
 void
 labelInterior (FlowResult& result, const FlowParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals);
 
