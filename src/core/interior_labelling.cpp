@@ -200,13 +200,12 @@ labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>&
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry> queue;
   auto margin = [&] (std::size_t c) { return std::abs (in_score[c] - out_score[c]); };
+  // Evidence adds up: a cell hears every labelled neighbour, so one confident but wrong facet
+  // (a flat cell's sphere) is outvoted (keeping only the strongest, a whole tube section of
+  // knot.off came out inside out).
   auto evidence = [&] (std::size_t c, bool outside, double weight) {
-    double& s = outside ? out_score[c] : in_score[c];
-    if (weight > s)
-    {
-      s = weight;
-      queue.emplace (margin (c), static_cast<int> (c));
-    }
+    (outside ? out_score[c] : in_score[c]) += weight;
+    queue.emplace (margin (c), static_cast<int> (c));
   };
 
   // The outside beyond the convex hull.

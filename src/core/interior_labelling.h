@@ -23,9 +23,10 @@ namespace core {
   * curve edges, which are given at least moderate "opposite" weight, the other edges at least
   * moderate "same" weight. Oriented normals and sensor rays add direct evidence per cell.
   *
-  * Labels are propagated greedily from the outside, most confident cell first (as the power
-  * crust labels its poles), so that weak, contradictory evidence (slivers, noise) is decided last
-  * by its strongest labelled neighbour.
+  * Labels are propagated greedily from the outside, the cell with the largest margin between its
+  * summed inside and outside evidence first (as the power crust labels its poles), so that weak,
+  * contradictory evidence (slivers, noise) is decided last, by the votes of all its labelled
+  * neighbours.
   *
   * Noisy samples (median surface variation above kNoiseVariation and, in Automatic mode, a raw
   * labelling that leaves more than kOffBoundaryShare of the samples off its boundary) are labelled
