@@ -274,10 +274,10 @@ main (int argc, char** argv)
                   result.cells.size (), result.maxima.size (), result.segments.size (), rho, interior,
                   result.features.size (), unlabelled);
     if (result.interior.computed)
-      std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s, surface variation %.4f, %d smoothing pass(es)\n",
+      std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s, %zu samples off the boundary, %d smoothing pass(es)\n",
                     result.interior.inside_volume, result.interior.inside_cells, result.interior.boundary_facets,
                     result.interior.closed ? "closed" : "NOT closed", result.interior.manifold ? "manifold" : "not manifold",
-                    result.interior.surface_variation, result.interior.smoothing_passes);
+                    result.interior.vertices_off_boundary, result.interior.smoothing_passes);
     std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, delaunay %.1f, flow %.1f, interior %.1f, merge %.1f, labels %.1f, total %.1f\n",
                   read_ms, t.preparation_ms, t.delaunay_ms, t.flow_ms, t.interior_ms, t.merge_ms, t.labels_ms, t.total_ms);
     std::fprintf (stderr, "wrote %s.labels.pcd, %s.json, %s.ply%s\n", prefix.c_str (), prefix.c_str (), prefix.c_str (),

@@ -150,7 +150,7 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
           << ", \"boundary_facets\": " << in.boundary_facets << ", \"closed\": " << (in.closed ? "true" : "false")
           << ", \"manifold\": " << (in.manifold ? "true" : "false") << ", \"nonmanifold_edges\": " << in.nonmanifold_edges
           << ", \"nonmanifold_vertices\": " << in.nonmanifold_vertices << ", \"vertices_off_boundary\": " << in.vertices_off_boundary
-          << ", \"surface_variation\": " << num (in.surface_variation) << ", \"smoothing_passes\": " << in.smoothing_passes
+          << ", \"surface_variation\": " << (in.surface_variation < 0 ? std::string ("null") : num (in.surface_variation)) << ", \"smoothing_passes\": " << in.smoothing_passes
           << ", \"ray_cells\": " << in.ray_cells;
     out << "},\n";
     out << "  \"segments\": [";

@@ -76,6 +76,7 @@ TEST_P (GeneratedInterior, LabelsMatchTheShapeAndTheBoundaryIsClosed)
   ASSERT_TRUE (r.interior.computed);
   EXPECT_TRUE (r.interior.closed);
   EXPECT_EQ (r.interior.smoothing_passes, 0) << "a clean sample is not smoothed";
+  EXPECT_LT (r.interior.vertices_off_boundary, r.vertices.size () / 100) << "samples lie on the surface";
   const double share = agreement (r, [&] (const V& p) { return shape.contains (p); });
   EXPECT_GT (share, shape.dimension == 2 ? 0.995 : 0.99) << GetParam ();
   // Every reported feature is interior and every interior cell is in one.
@@ -131,7 +132,7 @@ TEST (Interior, NoisySampleIsSmoothedAndStillSeparated)
   for (auto& p : pts)
     p += V (g (rng), g (rng), g (rng));
   const FlowResult noisy = segmentWith (pts);
-  EXPECT_GT (noisy.interior.surface_variation, 0.035);
+  EXPECT_GT (noisy.interior.surface_variation, 0.04);
   EXPECT_GE (noisy.interior.smoothing_passes, 1);
   EXPECT_GT (agreement (noisy, [&] (const V& p) { return shape.contains (p); }), 0.97);
   const FlowResult raw = segmentWith (pts, [] (FlowParameters& p) { p.denoising = Denoising::Off; });

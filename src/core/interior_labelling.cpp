@@ -290,13 +290,16 @@ labelInterior (FlowResult& r, const FlowParameters& params, const std::vector<Ei
   if (params.denoising == Denoising::Off)
     return;
 
+  // Noise shows twice: in a raw labelling that leaves many samples off the boundary it finds, and
+  // in the local PCA fits (undersampled sharp parts show only the first). The first is free, so
+  // the nearest-neighbour search for the second runs only when the first is seen.
+  const double off_boundary = static_cast<double> (r.interior.vertices_off_boundary) / std::max<std::size_t> (1, r.vertices.size ());
+  if (params.denoising == Denoising::Automatic && off_boundary <= kOffBoundaryShare)
+    return;
   const Neighbourhoods hoods = nearestNeighbourhoods (r.vertices);
   double variation = medianVariation (r.vertices, hoods, d);
   r.interior.surface_variation = variation;
-  const double off_boundary = static_cast<double> (r.interior.vertices_off_boundary) / std::max<std::size_t> (1, r.vertices.size ());
-  // Noise shows twice: in the local PCA fits, and in a raw labelling that leaves many samples off
-  // the boundary it finds (undersampled sharp parts raise the first but not the second).
-  if (params.denoising == Denoising::Automatic && (variation <= kNoiseVariation || off_boundary <= kOffBoundaryShare))
+  if (params.denoising == Denoising::Automatic && variation <= kNoiseVariation)
     return;
 
   // Noisy sample: decide in/out on a smoothed copy of the points (the greedy labelling needs a
