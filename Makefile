@@ -20,7 +20,7 @@ build: deps $(BUILD)/CMakeCache.txt
 
 demo: build
 	mkdir -p out
-	$(BUILD)/apps/flowseg_segment samples/dumbbell3d.pcd --output out/dumbbell3d
+	$(BUILD)/apps/flowseg_segment samples/animal3d.pcd --output out/animal3d
 	$(BUILD)/apps/flowseg_segment samples/hand2d.pcd --output out/hand2d
 
 test: build
