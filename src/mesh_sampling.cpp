@@ -4,6 +4,8 @@
  */
 #include <pcl_flowseg/mesh_sampling.h>
 
+#include "file_names.h"
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -30,17 +32,6 @@ namespace pcl_flowseg {
 
 namespace {
 
-std::string
-extensionOf (const std::string& path)
-{
-  const std::size_t dot = path.find_last_of ('.');
-  const std::size_t slash = path.find_last_of ('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return "";
-  std::string ext = path.substr (dot + 1);
-  std::transform (ext.begin (), ext.end (), ext.begin (), [] (unsigned char c) { return std::tolower (c); });
-  return ext;
-}
 
 bool
 nextLine (std::istream& in, std::string& line, std::size_t& number)
@@ -197,7 +188,7 @@ Status
 loadTriangleMesh (const std::string& path, TriangleMesh& mesh)
 {
   mesh = TriangleMesh ();
-  const std::string ext = extensionOf (path);
+  const std::string ext = lowerExtension (path);
   if (ext != "off" && ext != "obj" && ext != "ply")
     return Status::error (path + ": unknown mesh type '." + ext + "' (expected .off, .obj or .ply)");
   std::ifstream in (path);

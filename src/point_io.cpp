@@ -4,6 +4,8 @@
  */
 #include <pcl_flowseg/point_io.h>
 
+#include "file_names.h"
+
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/common/io.h>
 #include <pcl/io/pcd_io.h>
@@ -22,17 +24,6 @@ namespace pcl_flowseg {
 
 namespace {
 
-std::string
-lowerExtension (const std::string& path)
-{
-  const std::size_t slash = path.find_last_of ("/\\");
-  const std::size_t dot = path.find_last_of ('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return "";
-  std::string ext = path.substr (dot + 1);
-  std::transform (ext.begin (), ext.end (), ext.begin (), [] (unsigned char c) { return std::tolower (c); });
-  return ext;
-}
 
 /** Splits a line into numbers (white space or commas); false when a token is not a number. */
 bool
