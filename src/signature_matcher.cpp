@@ -1,0 +1,190 @@
+/*
+ * pcl_flowseg - matching two signatures (paper, section 5): alignment search and score.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/signature_matcher.h>
+
+#include <flann/flann.hpp>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pcl {
+
+namespace {
+
+using pcl_flowseg::Signature;
+
+/** Nearest neighbours among the points of one signature (FLANN kd-tree, built once per match). */
+class PointIndex
+{
+public:
+  explicit PointIndex (const Signature& s) : data_ (3 * std::max<std::size_t> (1, s.points.size ()), 0.0f)
+  {
+    for (std::size_t i = 0; i < s.points.size (); ++i)
+      for (int k = 0; k < 3; ++k)
+        data_[3 * i + static_cast<std::size_t> (k)] = static_cast<float> (s.points[i].position[k]);
+    if (!s.points.empty ())
+    {
+      index_.reset (new flann::Index<flann::L2_Simple<float>> (flann::Matrix<float> (data_.data (), s.points.size (), 3),
+                                                               flann::KDTreeSingleIndexParams (4)));
+      index_->buildIndex ();
+    }
+  }
+
+  /** Index of the nearest point and its squared distance. */
+  std::pair<int, float>
+  nearest (const Eigen::Vector3d& q) const
+  {
+    float query[3] = {static_cast<float> (q.x ()), static_cast<float> (q.y ()), static_cast<float> (q.z ())};
+    int id = -1;
+    float dist = 0.0f;
+    flann::Matrix<float> qm (query, 1, 3);
+    flann::Matrix<int> im (&id, 1, 1);
+    flann::Matrix<float> dm (&dist, 1, 1);
+    index_->knnSearch (qm, im, dm, 1, flann::SearchParams (flann::FLANN_CHECKS_UNLIMITED));
+    return {id, dist};
+  }
+
+private:
+  std::vector<float> data_;
+  std::unique_ptr<flann::Index<flann::L2_Simple<float>>> index_;
+};
+
+/** Rotation taking unit vector \a from to unit vector \a to. */
+Eigen::Matrix3d
+rotationBetween (const Eigen::Vector3d& from, const Eigen::Vector3d& to)
+{
+  return Eigen::Quaterniond::FromTwoVectors (from, to).toRotationMatrix ();
+}
+
+} // namespace
+
+SignatureMatcher::Result
+SignatureMatcher::alignOnto (const Signature& a, const Signature& b) const
+{
+  Result best;
+  best.score = -std::numeric_limits<double>::infinity ();
+  const PointIndex index (a);
+  const double threshold2 = threshold_ * threshold_;
+  std::vector<int> partner_of_a (a.points.size ());
+  std::vector<std::pair<int, int>> pairs;
+
+  auto score = [&] (const Eigen::Matrix3d& linear, const Eigen::Vector3d& translation, bool mirrored) {
+    std::fill (partner_of_a.begin (), partner_of_a.end (), 0);
+    pairs.clear ();
+    double s = 0.0;
+    for (std::size_t j = 0; j < b.points.size (); ++j)
+    {
+      const auto nn = index.nearest (linear * b.points[j].position + translation);
+      const double wq = b.points[j].weight;
+      if (nn.first >= 0 && nn.second <= threshold2)
+      {
+        const double wp = a.points[static_cast<std::size_t> (nn.first)].weight;
+        s += 1.0 - std::abs (wp - wq) / (wp + wq);
+        partner_of_a[static_cast<std::size_t> (nn.first)] = 1;
+        pairs.emplace_back (nn.first, static_cast<int> (j));
+      }
+      else
+        s -= wq;
+    }
+    for (std::size_t i = 0; i < a.points.size (); ++i)
+      if (!partner_of_a[i])
+        s -= a.points[i].weight;
+    ++best.alignments;
+    if (s > best.score)
+    {
+      best.score = s;
+      best.linear = linear;
+      best.translation = translation;
+      best.mirrored = mirrored;
+      best.pairs = pairs;
+    }
+  };
+
+  const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (std::max (1, alignment_points_)));
+  const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (std::max (1, alignment_points_)));
+  const Eigen::Vector3d a0 = a.points[0].position;
+  for (int mirror = 0; mirror < (allow_mirror_ ? 2 : 1); ++mirror)
+  {
+    const Eigen::Matrix3d m = mirror ? Eigen::Vector3d (-1, 1, 1).asDiagonal ().toDenseMatrix () : Eigen::Matrix3d::Identity ();
+    const Eigen::Vector3d b0 = m * b.points[0].position;
+    // Heaviest points together, no rotation: the only alignment when either has a single point.
+    score (m, a0 - b0, mirror == 1);
+    for (std::size_t i = 1; i < ma; ++i)
+    {
+      const Eigen::Vector3d ua = a.points[i].position - a0;
+      if (ua.norm () == 0.0)
+        continue;
+      for (std::size_t j = 1; j < mb; ++j)
+      {
+        const Eigen::Vector3d ub = m * b.points[j].position - b0;
+        if (ub.norm () == 0.0)
+          continue;
+        const Eigen::Vector3d axis = ua.normalized ();
+        const Eigen::Matrix3d r1 = rotationBetween (ub.normalized (), axis);
+        bool fixed = false;
+        // The rotation about the axis: every pair of third points.
+        for (std::size_t k = 1; k < ma; ++k)
+        {
+          if (k == i)
+            continue;
+          Eigen::Vector3d pa = a.points[k].position - a0;
+          pa -= pa.dot (axis) * axis;
+          if (pa.norm () < 1e-9)
+            continue;
+          for (std::size_t l = 1; l < mb; ++l)
+          {
+            if (l == j)
+              continue;
+            Eigen::Vector3d pb = r1 * (m * b.points[l].position - b0);
+            pb -= pb.dot (axis) * axis;
+            if (pb.norm () < 1e-9)
+              continue;
+            const double angle = std::atan2 (axis.dot (pb.cross (pa)), pb.dot (pa));
+            const Eigen::Matrix3d r = Eigen::AngleAxisd (angle, axis).toRotationMatrix () * r1;
+            score (r * m, a0 - r * b0, mirror == 1);
+            fixed = true;
+          }
+        }
+        if (!fixed)
+          score (r1 * m, a0 - r1 * b0, mirror == 1);
+      }
+    }
+  }
+  return best;
+}
+
+SignatureMatcher::Result
+SignatureMatcher::match (const Signature& a, const Signature& b) const
+{
+  Result r;
+  if (a.points.empty () || b.points.empty ())
+  {
+    for (const auto& p : a.points)
+      r.score -= p.weight;
+    for (const auto& p : b.points)
+      r.score -= p.weight;
+    return r;
+  }
+  Result ab = alignOnto (a, b);
+  Result ba = alignOnto (b, a);
+  const std::size_t alignments = ab.alignments + ba.alignments;
+  if (ba.score > ab.score)
+  {
+    // Invert: x_b = L x_a + t  =>  x_a = L^T (x_b - t) (L is orthogonal).
+    r = ba;
+    r.linear = ba.linear.transpose ();
+    r.translation = -(ba.linear.transpose () * ba.translation);
+    for (auto& p : r.pairs)
+      std::swap (p.first, p.second);
+  }
+  else
+    r = ab;
+  r.alignments = alignments;
+  return r;
+}
+
+} // namespace pcl

@@ -1,0 +1,170 @@
+/*
+ * Signatures and their matching: invariances, symmetry, ranking, degenerate signatures.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "test_support.h"
+
+#include <pcl_flowseg/feature_signature.h>
+#include <pcl_flowseg/signature_matcher.h>
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+using namespace pcl_flowseg;
+using V = Eigen::Vector3d;
+
+namespace {
+
+Signature
+signatureOf (const std::vector<V>& pts)
+{
+  FlowParameters params;
+  FlowResult r;
+  EXPECT_TRUE (runFlowSegmentation (pts, params, r).ok);
+  Signature s;
+  EXPECT_TRUE (signatureFromSegmentation (r, kDefaultSignificance, s).ok);
+  return s;
+}
+
+std::vector<V>
+transformed (const std::vector<V>& pts, double angle, const V& axis, double scale, bool mirror, const V& shift)
+{
+  const Eigen::Matrix3d r = Eigen::AngleAxisd (angle, axis.normalized ()).toRotationMatrix ();
+  std::vector<V> out;
+  for (V p : pts)
+  {
+    if (mirror)
+      p.y () = -p.y ();
+    out.push_back (scale * (r * p) + shift);
+  }
+  return out;
+}
+
+} // namespace
+
+TEST (Signature, FeaturesOfTheAnimal)
+{
+  const Signature s = signatureOf (flowseg_test::shapeSample ("animal3d", 4000));
+  ASSERT_GE (s.points.size (), 6u); // body, head, four legs (neck and tail may be smaller than 2%)
+  double sum = 0;
+  for (std::size_t k = 0; k < s.points.size (); ++k)
+  {
+    sum += s.points[k].weight;
+    if (k > 0)
+      EXPECT_LE (s.points[k].weight, s.points[k - 1].weight);
+  }
+  EXPECT_NEAR (sum, 1.0, 1e-12);
+  EXPECT_GT (s.points[0].weight, 0.5); // the body
+}
+
+TEST (Signature, RequiresInteriorAndSaneSignificance)
+{
+  FlowParameters params;
+  params.separate_interior = false;
+  FlowResult r;
+  ASSERT_TRUE (runFlowSegmentation (flowseg_test::shapeSample ("snowman3d", 1000), params, r).ok);
+  Signature s;
+  EXPECT_FALSE (signatureFromSegmentation (r, 0.02, s).ok);
+  params.separate_interior = true;
+  ASSERT_TRUE (runFlowSegmentation (flowseg_test::shapeSample ("snowman3d", 1000), params, r).ok);
+  EXPECT_FALSE (signatureFromSegmentation (r, -0.1, s).ok);
+  EXPECT_FALSE (signatureFromSegmentation (r, 1.0, s).ok);
+  EXPECT_TRUE (signatureFromSegmentation (r, 0.0, s).ok);
+}
+
+class MatchInvariance : public ::testing::TestWithParam<const char*> {};
+
+TEST_P (MatchInvariance, ATransformedResampledCopyScoresAtTheTop)
+{
+  const std::string name = GetParam ();
+  const int n = name.find ("2d") != std::string::npos ? 1500 : 4000;
+  const Signature query = signatureOf (flowseg_test::shapeSample (name, n, 1));
+  // The copy: another sample (seed), rotated, mirrored, scaled and moved.
+  const auto copy_pts = transformed (flowseg_test::shapeSample (name, n, 99), 1.1,
+                                     name.find ("2d") != std::string::npos ? V (0, 0, 1) : V (1, -2, 0.5), 3.5, true, V (4, -7, 2));
+  const Signature copy = signatureOf (copy_pts);
+  pcl::SignatureMatcher matcher;
+  const auto self = matcher.match (query, copy);
+  EXPECT_GT (self.score, 0.8 * static_cast<double> (query.points.size ()) - 0.2) << name;
+  // Every other shape of the same dimension scores lower.
+  for (const auto& other : sampleShapes ())
+  {
+    if (other.name == name || (other.dimension == 2) != (name.find ("2d") != std::string::npos))
+      continue;
+    const Signature o = signatureOf (sampleBoundary (other, n, 5));
+    EXPECT_LT (matcher.match (query, o).score, self.score) << name << " vs " << other.name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P (Shapes, MatchInvariance,
+                          ::testing::Values ("star2d", "hand2d", "dumbbell3d", "snowman3d", "animal3d"));
+
+TEST (Match, SymmetricAndTheTransformMapsPartners)
+{
+  const Signature a = signatureOf (flowseg_test::shapeSample ("animal3d", 3000, 1));
+  const Signature b = signatureOf (transformed (flowseg_test::shapeSample ("animal3d", 3000, 2), 0.7, V (0, 0, 1), 2.0, false, V::Zero ()));
+  pcl::SignatureMatcher matcher;
+  const auto ab = matcher.match (a, b);
+  const auto ba = matcher.match (b, a);
+  EXPECT_DOUBLE_EQ (ab.score, ba.score);
+  ASSERT_FALSE (ab.pairs.empty ());
+  for (const auto& p : ab.pairs)
+  {
+    const V mapped = ab.linear * b.points[static_cast<std::size_t> (p.second)].position + ab.translation;
+    EXPECT_LT ((mapped - a.points[static_cast<std::size_t> (p.first)].position).norm (), matcher.getThreshold () + 1e-9);
+  }
+  EXPECT_NEAR (std::abs (ab.linear.determinant ()), 1.0, 1e-9);
+  EXPECT_NEAR ((ab.linear * ab.linear.transpose () - Eigen::Matrix3d::Identity ()).norm (), 0.0, 1e-9);
+}
+
+TEST (Match, MirroringIsFoundOnlyWhenAllowed)
+{
+  // A chiral arrangement of weighted points and its mirror image.
+  Signature a;
+  a.points = {{V (0, 0, 0), 0.4}, {V (1, 0, 0), 0.25}, {V (0, 1.5, 0), 0.2}, {V (0, 0, 0.7), 0.15}};
+  Signature b = a;
+  for (auto& p : b.points)
+    p.position.z () = -p.position.z ();
+  pcl::SignatureMatcher matcher;
+  const auto with = matcher.match (a, b);
+  EXPECT_NEAR (with.score, 4.0, 1e-9);
+  EXPECT_TRUE (with.mirrored);
+  matcher.setAllowMirror (false);
+  EXPECT_LT (matcher.match (a, b).score, 4.0 - 0.1);
+  EXPECT_NEAR (matcher.match (a, a).score, 4.0, 1e-9);
+}
+
+TEST (Match, DegenerateSignatures)
+{
+  Signature empty, one, two;
+  one.points = {{V::Zero (), 1.0}};
+  two.points = {{V::Zero (), 0.6}, {V (1, 0, 0), 0.4}};
+  pcl::SignatureMatcher matcher;
+  EXPECT_EQ (matcher.match (empty, empty).score, 0.0);
+  EXPECT_EQ (matcher.match (empty, one).score, -1.0);
+  EXPECT_EQ (matcher.match (one, empty).score, -1.0);
+  EXPECT_NEAR (matcher.match (one, one).score, 1.0, 1e-12);
+  // One point against two: the heavy ones pair up, the light one is unmatched.
+  const double expected = 1.0 - 0.4 / 1.6 - 0.4;
+  EXPECT_NEAR (matcher.match (one, two).score, expected, 1e-12);
+  EXPECT_NEAR (matcher.match (two, one).score, expected, 1e-12);
+  EXPECT_NEAR (matcher.match (two, two).score, 2.0, 1e-12);
+}
+
+TEST (FeatureSignature, PclStyle)
+{
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : flowseg_test::shapeSample ("snowman3d", 3000))
+    cloud->push_back (pcl::PointXYZ (static_cast<float> (p.x ()), static_cast<float> (p.y ()), static_cast<float> (p.z ())));
+  pcl::FeatureSignature<pcl::PointXYZ> fs;
+  fs.setInputCloud (cloud);
+  Signature s;
+  ASSERT_TRUE (fs.compute (s)) << fs.getLastError ();
+  EXPECT_EQ (s.points.size (), 3u); // three balls
+  pcl::PointCloud<pcl::PointXYZ>::Ptr tiny (new pcl::PointCloud<pcl::PointXYZ>);
+  tiny->push_back (pcl::PointXYZ (0, 0, 0));
+  fs.setInputCloud (tiny);
+  EXPECT_FALSE (fs.compute (s));
+  EXPECT_FALSE (fs.getLastError ().empty ());
+}
