@@ -5,7 +5,10 @@
 #include <pcl_flowseg/result_writer.h>
 #include <pcl_flowseg/shape_generator.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <sys/stat.h>
 #include <iostream>
 #include <string>
 
@@ -63,6 +66,11 @@ main (int argc, char** argv)
       std::cerr << "flowseg_make_samples: bad or incomplete option '" << arg << "' (see --help)\n";
       return 2;
     }
+  }
+  if (mkdir (dir.c_str (), 0755) != 0 && errno != EEXIST)
+  {
+    std::cerr << "flowseg_make_samples: cannot create " << dir << ": " << std::strerror (errno) << "\n";
+    return 1;
   }
   for (const auto& shape : pcl_flowseg::sampleShapes ())
   {

@@ -34,19 +34,19 @@ public:
     }
   }
 
-  /** Index of the nearest point and its squared distance. */
-  std::pair<int, float>
-  nearest (const Eigen::Vector3d& q) const
+  /** Nearest point (index, squared distance) of each of \a count queries (x y z floats), in one call. */
+  void
+  nearest (std::vector<float>& queries, std::size_t count, std::vector<int>& ids, std::vector<float>& dist) const
   {
-    float query[3] = {static_cast<float> (q.x ()), static_cast<float> (q.y ()), static_cast<float> (q.z ())};
-    int id = -1;
-    float dist = 0.0f;
-    flann::Matrix<float> qm (query, 1, 3);
-    flann::Matrix<int> im (&id, 1, 1);
-    flann::Matrix<float> dm (&dist, 1, 1);
-    index_->knnSearch (qm, im, dm, 1, flann::SearchParams (flann::FLANN_CHECKS_UNLIMITED));
-    return {id, dist};
+    ids.assign (count, -1);
+    dist.assign (count, 0.0f);
+    flann::Matrix<float> qm (queries.data (), count, 3);
+    flann::Matrix<int> im (ids.data (), count, 1);
+    flann::Matrix<float> dm (dist.data (), count, 1);
+    index_->knnSearch (qm, im, dm, 1, search_);
   }
+
+  flann::SearchParams search_ = flann::SearchParams (flann::FLANN_CHECKS_UNLIMITED);
 
 private:
   std::vector<float> data_;
@@ -71,21 +71,30 @@ SignatureMatcher::alignOnto (const Signature& a, const Signature& b) const
   const double threshold2 = threshold_ * threshold_;
   std::vector<int> partner_of_a (a.points.size ());
   std::vector<std::pair<int, int>> pairs;
+  std::vector<float> queries (3 * b.points.size ());
+  std::vector<int> ids;
+  std::vector<float> dist;
 
   auto score = [&] (const Eigen::Matrix3d& linear, const Eigen::Vector3d& translation, bool mirrored) {
     std::fill (partner_of_a.begin (), partner_of_a.end (), 0);
     pairs.clear ();
+    for (std::size_t j = 0; j < b.points.size (); ++j)
+    {
+      const Eigen::Vector3d q = linear * b.points[j].position + translation;
+      for (int k = 0; k < 3; ++k)
+        queries[3 * j + static_cast<std::size_t> (k)] = static_cast<float> (q[k]);
+    }
+    index.nearest (queries, b.points.size (), ids, dist);
     double s = 0.0;
     for (std::size_t j = 0; j < b.points.size (); ++j)
     {
-      const auto nn = index.nearest (linear * b.points[j].position + translation);
       const double wq = b.points[j].weight;
-      if (nn.first >= 0 && nn.second <= threshold2)
+      if (ids[j] >= 0 && dist[j] <= threshold2)
       {
-        const double wp = a.points[static_cast<std::size_t> (nn.first)].weight;
+        const double wp = a.points[static_cast<std::size_t> (ids[j])].weight;
         s += 1.0 - std::abs (wp - wq) / (wp + wq);
-        partner_of_a[static_cast<std::size_t> (nn.first)] = 1;
-        pairs.emplace_back (nn.first, static_cast<int> (j));
+        partner_of_a[static_cast<std::size_t> (ids[j])] = 1;
+        pairs.emplace_back (ids[j], static_cast<int> (j));
       }
       else
         s -= wq;
@@ -167,6 +176,7 @@ SignatureMatcher::match (const Signature& a, const Signature& b) const
       r.score -= p.weight;
     for (const auto& p : b.points)
       r.score -= p.weight;
+    r.similarity = a.points.empty () && b.points.empty () ? 0.0 : r.score;
     return r;
   }
   Result ab = alignOnto (a, b);
@@ -184,6 +194,7 @@ SignatureMatcher::match (const Signature& a, const Signature& b) const
   else
     r = ab;
   r.alignments = alignments;
+  r.similarity = r.score / static_cast<double> (std::max (a.points.size (), b.points.size ()));
   return r;
 }
 

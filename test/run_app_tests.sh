@@ -24,7 +24,7 @@ expect() {
   if [ "$rc" -ne "$code" ]; then
     echo "FAILED: $name: exit $rc, expected $code"; sed 's/^/    /' "$work/err.txt" | head -5; failed=$((failed + 1)); return
   fi
-  if [ -n "$pattern" ] && ! grep -qiE "$pattern" "$work/out.txt" "$work/err.txt"; then
+  if [ -n "$pattern" ] && ! grep -qiE -e "$pattern" "$work/out.txt" "$work/err.txt"; then
     echo "FAILED: $name: output does not match '$pattern'"; sed 's/^/    /' "$work/err.txt" | head -5; failed=$((failed + 1)); return
   fi
   passed=$((passed + 1))
@@ -119,6 +119,43 @@ expect "sampler bad noise" 2 "noise" -- "$smp" "$work/tet.off" --noise -1 -o "$w
 expect "sampler no output" 2 "output" -- "$smp" "$work/tet.off"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/broken.off"
 expect "sampler corrupt mesh" 1 "vertex" -- "$smp" "$work/broken.off" -o "$work/x.pcd"
+
+# --- signature database and retrieval evaluation ----------------------------------------------
+db="$build/apps/flowseg_db"
+ev="$build/apps/flowseg_eval"
+for seed in 1 2 3; do
+  "$gen" --output "$work/gen$seed" --points3d 1500 --points2d 300 --seed $seed >/dev/null 2>&1
+  for shape in snowman3d dumbbell3d animal3d; do
+    mkdir -p "$work/tree/$shape"; cp "$work/gen$seed/$shape.pcd" "$work/tree/$shape/$shape-$seed.pcd"
+  done
+done
+expect "db build" 0 "9 shapes" -- "$db" build "$work/shapes.db" "$work/tree" -j 2
+expect "db list" 0 "snowman3d" -- "$db" list "$work/shapes.db"
+expect "db query finds the class" 0 "^1.*snowman3d" -- "$db" query "$work/shapes.db" "$work/tree/snowman3d/snowman3d-1.pcd" -k 3
+expect "db add" 0 "10 shapes" -- "$db" add "$work/shapes.db" "$src/samples/hand2d.pcd" --label hand
+expect "db query reports its time" 0 "ms per shape" -- "$db" query "$work/shapes.db" "$work/tree/animal3d/animal3d-2.pcd"
+printf 'not a database\n' > "$work/foreign.db"
+expect "db foreign file" 1 "not a pcl_flowseg signature database" -- "$db" query "$work/foreign.db" "$work/tree/animal3d/animal3d-2.pcd"
+expect "db missing file" 1 "cannot open" -- "$db" list "$work/none.db"
+expect "db bad command" 2 "unknown command" -- "$db" frobnicate "$work/shapes.db"
+expect "db bad k" 2 "-k" -- "$db" query "$work/shapes.db" x.pcd -k -3
+expect "eval" 0 "flowseg.*NN" -- "$ev" "$work/tree" -o "$work/eval" -j 2
+if command -v python3 >/dev/null 2>&1; then
+  python3 - "$work/eval" <<'PY'
+import csv, json, sys
+d = json.load(open(sys.argv[1] + "/scores.json"))
+for m in ("flowseg", "d2", "esf"):
+    s = d["methods"][m]
+    assert 0 <= s["first_tier"] <= 1 and s["queries"] == 9, m
+    rows = list(csv.reader(open(sys.argv[1] + "/similarity_%s.csv" % m)))
+    assert len(rows) == 10 and rows[0][1:] == [r[0] for r in rows[1:]], m
+    assert open(sys.argv[1] + "/similarity_%s.png" % m, "rb").read(8) == b"\x89PNG\r\n\x1a\n", m
+assert d["methods"]["flowseg"]["nearest_neighbour"] == 1.0, d["methods"]["flowseg"]
+PY
+  check "eval outputs well-formed; flowseg finds every nearest neighbour" $?
+fi
+expect "eval missing root" 1 "cannot open" -- "$ev" "$work/none" -o "$work/eval2"
+expect "eval no output" 2 "output" -- "$ev" "$work/tree"
 
 echo "apps: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -35,7 +35,11 @@ public:
   /** \brief The best alignment found. */
   struct Result
   {
-    double score = 0.0;  ///< similarity: higher is more similar; at most the number of points
+    double score = 0.0;  ///< the paper's score: higher is more similar; at most the number of points
+    /** score divided by the larger number of points: 1 for identical signatures, comparable across
+      * signatures of different sizes (the raw score grows with the number of features). Databases
+      * rank by it. */
+    double similarity = 0.0;
     /** Maps the second signature's (normalised) points onto the first's: x_a = linear * x_b +
       * translation; linear is a rotation, mirrored when its determinant is -1. */
     Eigen::Matrix3d linear = Eigen::Matrix3d::Identity ();
@@ -49,7 +53,8 @@ public:
   SignatureMatcher () = default;
 
   /** \brief Largest distance between partner points, in the signatures' normalised length unit
-    * (interior volume^(1/d)). Default 0.3. */
+    * (interior volume^(1/d)). Default 0.4, chosen on the TOSCA set (0.2: first tier 0.48, 0.3:
+    * 0.53, 0.4: 0.55, 0.5: 0.54). */
   inline void setThreshold (double threshold) { threshold_ = threshold; }
   inline double getThreshold () const { return threshold_; }
 
@@ -58,7 +63,8 @@ public:
   inline bool getAllowMirror () const { return allow_mirror_; }
 
   /** \brief How many of the heaviest points of each signature generate alignments (all points are
-    * scored). Default 6; the search costs O(m^2 n^2) alignments in 3D. */
+    * scored). Default 4: on the TOSCA set 6 points took 1.4 ms per comparison for a first tier of
+    * 0.554, 4 points 0.24 ms for 0.533; the search costs O(m^2 n^2) alignments in 3D. */
   inline void setAlignmentPoints (int count) { alignment_points_ = count; }
   inline int getAlignmentPoints () const { return alignment_points_; }
 
@@ -70,9 +76,9 @@ protected:
   /** Best alignment moving \a b onto \a a, scored from b's points. */
   Result alignOnto (const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b) const;
 
-  double threshold_ = 0.3;
+  double threshold_ = 0.4;
   bool allow_mirror_ = true;
-  int alignment_points_ = 6;
+  int alignment_points_ = 4;
 };
 
 } // namespace pcl

@@ -1,0 +1,139 @@
+/*
+ * Signature database file, queries, retrieval scores and the PNG writer.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "test_support.h"
+
+#include <pcl_flowseg/retrieval.h>
+#include <pcl_flowseg/signature_database.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+using namespace pcl_flowseg;
+using V = Eigen::Vector3d;
+
+namespace {
+std::string
+tempPath (const std::string& name)
+{
+  return "/tmp/flowseg_db_test_" + std::to_string (::getpid ()) + "_" + name;
+}
+
+ShapeEntry
+entry (const std::string& name, const std::string& label, const std::vector<WeightedPoint>& points)
+{
+  ShapeEntry e;
+  e.name = name;
+  e.label = label;
+  e.signature.points = points;
+  return e;
+}
+} // namespace
+
+TEST (Database, SaveLoadAddQuery)
+{
+  SignatureDatabase db;
+  EXPECT_TRUE (db.add (entry ("a b/one.pcd", "a", {{V (0, 0, 0), 0.6}, {V (1, 0, 0), 0.4}})));
+  EXPECT_TRUE (db.add (entry ("two.pcd", "b", {{V (0, 0, 0), 0.5}, {V (0, 2, 0), 0.3}, {V (0, 0, 1), 0.2}})));
+  EXPECT_FALSE (db.add (entry ("two.pcd", "b", {{V (0, 0, 0), 1.0}}))) << "same name replaces";
+  EXPECT_EQ (db.size (), 2u);
+  const std::string path = tempPath ("ok.db");
+  ASSERT_TRUE (db.save (path).ok);
+  SignatureDatabase back;
+  ASSERT_TRUE (back.load (path).ok);
+  ASSERT_EQ (back.size (), 2u);
+  EXPECT_EQ (back.entries ()[0].name, "a b/one.pcd");
+  EXPECT_EQ (back.entries ()[1].signature.points.size (), 1u);
+  EXPECT_DOUBLE_EQ (back.entries ()[0].signature.points[1].weight, 0.4);
+
+  Signature q;
+  q.points = {{V (5, 5, 5), 0.61}, {V (5, 5, 6), 0.39}}; // the first shape, moved and turned
+  pcl::SignatureMatcher matcher;
+  const auto hits = back.query (q, 1, matcher);
+  ASSERT_EQ (hits.size (), 1u);
+  EXPECT_EQ (back.entries ()[hits[0].entry].name, "a b/one.pcd");
+  EXPECT_GT (hits[0].similarity, 0.95);
+  std::remove (path.c_str ());
+}
+
+TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
+{
+  SignatureDatabase db;
+  auto write = [] (const std::string& name, const std::string& text) {
+    const std::string p = tempPath (name);
+    std::ofstream (p) << text;
+    return p;
+  };
+  const std::string head = "pcl_flowseg signature database 1\nshapes 1\n";
+  struct Case { std::string text, expected; };
+  const std::vector<Case> cases = {
+      {"hello world\n", "not a pcl_flowseg signature database"},
+      {"pcl_flowseg signature database 7\nshapes 0\n", "version"},
+      {"pcl_flowseg signature database 1\nshapes x\n", ":2:"},
+      {head + "shape a 3 1 1 0.02 2 name\np 0 0 0 0.5\n", ":5:"},
+      {head + "shape a 3 1 1 0.02 1 name\np 0 0 nan 0.5\n", ":4:"},
+      {head + "shape a 4 1 1 0.02 1 name\np 0 0 0 1\n", ":3:"},
+      {head + "shape a 3 1 1 0.02 1\np 0 0 0 1\n", "name"},
+      {"", "not a pcl_flowseg"},
+  };
+  for (std::size_t k = 0; k < cases.size (); ++k)
+  {
+    const std::string p = write ("bad" + std::to_string (k), cases[k].text);
+    const Status s = db.load (p);
+    EXPECT_FALSE (s.ok) << k;
+    EXPECT_NE (s.message.find (cases[k].expected), std::string::npos) << k << ": " << s.message;
+    EXPECT_EQ (db.size (), 0u);
+    std::remove (p.c_str ());
+  }
+  EXPECT_FALSE (db.load ("/nonexistent/x.db").ok);
+}
+
+TEST (Retrieval, ScoresOfAKnownMatrix)
+{
+  // Four shapes, two classes; shape 0 ranks (1, 2, 3), shape 2 ranks (0, 3, 1).
+  const std::vector<std::string> labels = {"a", "a", "b", "b"};
+  const std::vector<std::vector<double>> m = {
+      {1, 0.9, 0.5, 0.1}, {0.9, 1, 0.2, 0.1}, {0.8, 0.1, 1, 0.7}, {0.1, 0.2, 0.8, 1}};
+  const RetrievalScores s = scoreRetrieval (m, labels);
+  EXPECT_EQ (s.queries, 4u);
+  EXPECT_DOUBLE_EQ (s.nearest_neighbour, 0.75); // shape 2's best match is shape 0
+  EXPECT_DOUBLE_EQ (s.first_tier, 0.75);
+  EXPECT_DOUBLE_EQ (s.second_tier, 1.0);
+  // DCG (Princeton convention, rank 1 undiscounted, rank r >= 2 discounted by log2 r): shape 2's
+  // single hit at rank 2 gains 1/log2 2 = 1, as much as the ideal hit at rank 1.
+  EXPECT_DOUBLE_EQ (s.dcg, 1.0);
+  // Bull's eye: top 2C = 4 including the query: all of each class.
+  EXPECT_DOUBLE_EQ (s.bulls_eye, 1.0);
+}
+
+TEST (Retrieval, D2IsInvariantAndDiscriminates)
+{
+  const auto a = flowseg_test::shapeSample ("snowman3d", 3000, 1);
+  std::vector<V> moved;
+  for (const auto& p : a)
+    moved.push_back (2.5 * (Eigen::AngleAxisd (0.5, V (0, 1, 1).normalized ()) * p) + V (1, 2, 3));
+  const auto other = flowseg_test::shapeSample ("dumbbell3d", 3000, 1);
+  const auto ha = d2Distribution (a), hm = d2Distribution (moved), ho = d2Distribution (other);
+  EXPECT_GT (histogramSimilarity (ha, hm), 0.97);
+  EXPECT_LT (histogramSimilarity (ha, ho), histogramSimilarity (ha, hm));
+  const auto ea = esfDescriptor (a);
+  EXPECT_EQ (ea.size (), 640u);
+}
+
+TEST (Png, WellFormed)
+{
+  const std::string p = tempPath ("m.png");
+  ASSERT_TRUE (writeSimilarityPng (p, {{1, 0.5}, {0.5, 1}}, 5, 3).ok);
+  std::ifstream in (p, std::ios::binary);
+  std::string bytes ((std::istreambuf_iterator<char> (in)), std::istreambuf_iterator<char> ());
+  ASSERT_GT (bytes.size (), 50u);
+  EXPECT_EQ (bytes.substr (1, 3), "PNG");
+  EXPECT_NE (bytes.find ("IHDR"), std::string::npos);
+  EXPECT_EQ (bytes.substr (bytes.size () - 8, 4), "IEND");
+  EXPECT_FALSE (writePng (p, 2, 2, 1, std::vector<std::uint8_t> (3)).ok);
+  std::remove (p.c_str ());
+}
