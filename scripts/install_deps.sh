@@ -7,7 +7,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake make pkg-config
   libpcl-dev libcgal-dev libflann-dev libeigen3-dev libboost-dev
-  libgtest-dev libtbb-dev
+  libgtest-dev libtbb-dev libpng-dev
 )
 
 missing=()

@@ -8,6 +8,7 @@
 
 #include <pcl_flowseg/mesh_sampling.h>
 #include <pcl_flowseg/point_io.h>
+#include <pcl_flowseg/silhouette.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -20,7 +21,7 @@ namespace pcl_flowseg {
 bool
 isShapeFile (const std::string& path)
 {
-  return isSupportedPointFile (path);
+  return isSupportedPointFile (path) || isSilhouetteFile (path);
 }
 
 Status
@@ -28,6 +29,17 @@ loadShapeSample (const std::string& path, const ShapeInputOptions& options, std:
 {
   points.clear ();
   const std::string ext = lowerExtension (path);
+  if (isSilhouetteFile (path))
+  {
+    GreyImage image;
+    const Status s = loadGreyImage (path, image);
+    if (!s.ok)
+      return s;
+    points = silhouetteBoundary (image);
+    if (points.empty ())
+      return Status::error (path + ": the image holds no silhouette");
+    return Status::success ();
+  }
   if (ext == "off" || ext == "obj" || ext == "ply")
   {
     TriangleMesh mesh;

@@ -21,12 +21,13 @@ struct ShapeInputOptions
   std::uint32_t seed = 1;          ///< sampling seed
 };
 
-/** \brief True for the files loadShapeSample reads (.pcd .ply .xyz .txt .csv .off .obj). */
+/** \brief True for the files loadShapeSample reads (.pcd .ply .xyz .txt .csv .off .obj, and the
+  * silhouette images .png .bmp .pgm). */
 bool
 isShapeFile (const std::string& path);
 
 /** \brief Reads a shape as points: meshes (.off, .obj, and .ply files with faces) are sampled on
-  * their faces, point files are read as they are. */
+  * their faces, point files are read as they are, silhouette images give their boundary (2D). */
 Status
 loadShapeSample (const std::string& path, const ShapeInputOptions& options, std::vector<Eigen::Vector3d>& points);
 
