@@ -38,7 +38,8 @@ Every shape file below ROOT is a query against all others (class = name of the f
 the file). For each method: OUTDIR/similarity_METHOD.csv (higher = more similar; header row and
 first column name the shapes in one order), OUTDIR/similarity_METHOD.png (row i: the 5 best
 matches of shape i, black = best) and OUTDIR/scores.json (nearest neighbour, first and second tier,
-DCG, bull's eye for 2D sets, time).
+DCG, bull's eye for 2D sets, time), and OUTDIR/top5_METHOD.png: the first shape of up to eight
+classes and its five best matches (green frame: same class, red: another).
 
 Methods: flowseg (this module's signatures and matcher), d2 (Osada's D2 shape distribution on the
 same points), esf (PCL's Ensemble of Shape Functions).
@@ -175,6 +176,7 @@ main (int argc, char** argv)
   std::vector<std::string> labels (n);
   std::vector<pcl_flowseg::Signature> sigs (n);
   std::vector<std::vector<double>> d2 (n), esf (n);
+  std::vector<std::vector<Eigen::Vector3d>> drawings (n); // a few thousand points per shape for pictures
   std::vector<std::string> errors (n);
   std::vector<int> dims (n, 0);
   double extract_ms[3] = {0, 0, 0};
@@ -187,6 +189,8 @@ main (int argc, char** argv)
     labels[i] = pcl_flowseg::shapeLabel (files[i]);
     std::vector<Eigen::Vector3d> pts;
     auto s = pcl_flowseg::loadShapeSample (root + "/" + files[i], input, pts);
+    for (std::size_t k = 0; k < pts.size (); k += std::max<std::size_t> (1, pts.size () / 3000))
+      drawings[i].push_back (pts[k]);
     double t[3] = {0, 0, 0};
     if (s.ok && use_flowseg)
     {
@@ -239,11 +243,18 @@ main (int argc, char** argv)
     const auto scores = pcl_flowseg::scoreRetrieval (m, labels);
     auto s1 = pcl_flowseg::writeSimilarityCsv (out + "/similarity_" + name + ".csv", files, m);
     auto s2 = pcl_flowseg::writeSimilarityPng (out + "/similarity_" + name + ".png", m);
-    if (!s1 || !s2)
-    {
-      std::cerr << "flowseg_eval: " << (s1 ? s2.message : s1.message) << "\n";
-      std::exit (1);
-    }
+    // Figure 10: the first shape of up to eight classes and its five best matches.
+    std::vector<std::size_t> queries;
+    for (std::size_t i = 0; i < n && queries.size () < 8; ++i)
+      if (i == 0 || labels[i] != labels[i - 1])
+        queries.push_back (i);
+    auto s3 = pcl_flowseg::writeTopMatchesPng (out + "/top5_" + name + ".png", drawings, labels, m, queries);
+    for (const auto* st : {&s1, &s2, &s3})
+      if (!*st)
+      {
+        std::cerr << "flowseg_eval: " << st->message << "\n";
+        std::exit (1);
+      }
     char buf[640];
     std::snprintf (buf, sizeof (buf),
                    "%s\n    \"%s\": {\"nearest_neighbour\": %.4f, \"first_tier\": %.4f, \"second_tier\": %.4f, \"dcg\": %.4f%s, "

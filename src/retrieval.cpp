@@ -8,6 +8,12 @@
 
 #include <pcl/features/esf.h>
 
+#include <png.h>
+
+#include <cstdio>
+
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -172,103 +178,133 @@ writeSimilarityCsv (const std::string& path, const std::vector<std::string>& nam
   });
 }
 
-namespace {
-
-std::uint32_t
-crc32 (const std::uint8_t* data, std::size_t n, std::uint32_t crc = 0)
-{
-  static std::uint32_t table[256];
-  static bool ready = false;
-  if (!ready)
-  {
-    for (std::uint32_t i = 0; i < 256; ++i)
-    {
-      std::uint32_t c = i;
-      for (int k = 0; k < 8; ++k)
-        c = c & 1 ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      table[i] = c;
-    }
-    ready = true;
-  }
-  crc = ~crc;
-  for (std::size_t i = 0; i < n; ++i)
-    crc = table[(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
-  return ~crc;
-}
-
-void
-put32 (std::vector<std::uint8_t>& v, std::uint32_t x)
-{
-  for (int s = 24; s >= 0; s -= 8)
-    v.push_back (static_cast<std::uint8_t> (x >> s));
-}
-
-void
-chunk (std::vector<std::uint8_t>& png, const char* type, const std::vector<std::uint8_t>& data)
-{
-  put32 (png, static_cast<std::uint32_t> (data.size ()));
-  std::vector<std::uint8_t> body (type, type + 4);
-  body.insert (body.end (), data.begin (), data.end ());
-  png.insert (png.end (), body.begin (), body.end ());
-  put32 (png, crc32 (body.data (), body.size ()));
-}
-
-} // namespace
-
 Status
 writePng (const std::string& path, int width, int height, int channels, const std::vector<std::uint8_t>& pixels)
 {
   if (width <= 0 || height <= 0 || (channels != 1 && channels != 3) ||
       pixels.size () != static_cast<std::size_t> (width) * static_cast<std::size_t> (height) * static_cast<std::size_t> (channels))
     return Status::error ("cannot write " + path + ": invalid image size");
-  // Raw scan lines (filter byte 0), then a zlib stream of stored deflate blocks.
-  std::vector<std::uint8_t> raw;
-  const std::size_t row = static_cast<std::size_t> (width) * static_cast<std::size_t> (channels);
-  for (int y = 0; y < height; ++y)
-  {
-    raw.push_back (0);
-    raw.insert (raw.end (), pixels.begin () + static_cast<long> (y * row), pixels.begin () + static_cast<long> ((y + 1) * row));
-  }
-  std::vector<std::uint8_t> z = {0x78, 0x01};
-  for (std::size_t pos = 0; pos < raw.size () || raw.empty ();)
-  {
-    const std::size_t len = std::min<std::size_t> (65535, raw.size () - pos);
-    z.push_back (pos + len >= raw.size () ? 1 : 0);
-    z.push_back (static_cast<std::uint8_t> (len & 0xFF));
-    z.push_back (static_cast<std::uint8_t> (len >> 8));
-    z.push_back (static_cast<std::uint8_t> (~len & 0xFF));
-    z.push_back (static_cast<std::uint8_t> ((~len >> 8) & 0xFF));
-    z.insert (z.end (), raw.begin () + static_cast<long> (pos), raw.begin () + static_cast<long> (pos + len));
-    pos += len;
-    if (raw.empty ())
-      break;
-  }
-  std::uint32_t s1 = 1, s2 = 0; // Adler-32
-  for (std::uint8_t b : raw)
-  {
-    s1 = (s1 + b) % 65521;
-    s2 = (s2 + s1) % 65521;
-  }
-  put32 (z, (s2 << 16) | s1);
-
-  std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  std::vector<std::uint8_t> ihdr;
-  put32 (ihdr, static_cast<std::uint32_t> (width));
-  put32 (ihdr, static_cast<std::uint32_t> (height));
-  ihdr.push_back (8);
-  ihdr.push_back (channels == 1 ? 0 : 2);
-  ihdr.push_back (0);
-  ihdr.push_back (0);
-  ihdr.push_back (0);
-  chunk (png, "IHDR", ihdr);
-  chunk (png, "IDAT", z);
-  chunk (png, "IEND", {});
   return writeFileAtomically (path, [&] (const std::string& tmp) {
-    std::ofstream out (tmp, std::ios::binary);
-    out.write (reinterpret_cast<const char*> (png.data ()), static_cast<std::streamsize> (png.size ()));
-    out.flush ();
-    return out.good () ? Status::success () : Status::error ("write failed");
+    FILE* file = std::fopen (tmp.c_str (), "wb");
+    if (!file)
+      return Status::error ("cannot create file");
+    png_structp png = png_create_write_struct (PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct (png) : nullptr;
+    if (!png || !info || setjmp (png_jmpbuf (png)))
+    {
+      png_destroy_write_struct (&png, &info);
+      std::fclose (file);
+      return Status::error ("libpng failed");
+    }
+    png_init_io (png, file);
+    png_set_IHDR (png, info, static_cast<png_uint_32> (width), static_cast<png_uint_32> (height), 8,
+                  channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                  PNG_FILTER_TYPE_DEFAULT);
+    png_write_info (png, info);
+    const std::size_t stride = static_cast<std::size_t> (width) * static_cast<std::size_t> (channels);
+    for (int y = 0; y < height; ++y)
+      png_write_row (png, const_cast<png_bytep> (pixels.data () + static_cast<std::size_t> (y) * stride));
+    png_write_end (png, nullptr);
+    png_destroy_write_struct (&png, &info);
+    return std::fclose (file) == 0 ? Status::success () : Status::error ("write failed");
   });
+}
+
+namespace {
+/** Draws \a points into the square cell at (x0, y0) of an RGB image \a width pixels wide. */
+void
+drawShape (std::vector<std::uint8_t>& img, int width, int x0, int y0, int cell, const std::vector<Eigen::Vector3d>& points)
+{
+  if (points.empty ())
+    return;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+  for (const auto& p : points)
+    mean += p;
+  mean /= static_cast<double> (points.size ());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+  for (const auto& p : points)
+    cov += (p - mean) * (p - mean).transpose ();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es (cov);
+  Eigen::Vector3d u = es.eigenvectors ().col (2), v = es.eigenvectors ().col (1);
+  // Planar shapes keep their orientation: project on x and y when z is constant.
+  bool planar = true;
+  for (const auto& p : points)
+    planar &= p.z () == points.front ().z ();
+  if (planar)
+  {
+    u = Eigen::Vector3d::UnitX ();
+    v = Eigen::Vector3d::UnitY ();
+  }
+  double lo_u = 1e300, hi_u = -1e300, lo_v = 1e300, hi_v = -1e300;
+  for (const auto& p : points)
+  {
+    lo_u = std::min (lo_u, (p - mean).dot (u));
+    hi_u = std::max (hi_u, (p - mean).dot (u));
+    lo_v = std::min (lo_v, (p - mean).dot (v));
+    hi_v = std::max (hi_v, (p - mean).dot (v));
+  }
+  const double span = std::max (hi_u - lo_u, hi_v - lo_v);
+  if (!(span > 0))
+    return;
+  const double scale = (cell - 12) / span;
+  for (const auto& p : points)
+  {
+    const int x = x0 + 6 + static_cast<int> (((p - mean).dot (u) - lo_u) * scale + 0.5 * (cell - 12 - (hi_u - lo_u) * scale));
+    const int y = y0 + cell - 7 - static_cast<int> (((p - mean).dot (v) - lo_v) * scale + 0.5 * (cell - 12 - (hi_v - lo_v) * scale));
+    if (x < x0 || y < y0 || x >= x0 + cell || y >= y0 + cell)
+      continue;
+    for (int c = 0; c < 3; ++c)
+      img[3 * (static_cast<std::size_t> (y) * static_cast<std::size_t> (width) + static_cast<std::size_t> (x)) + static_cast<std::size_t> (c)] = 40;
+  }
+}
+
+void
+frame (std::vector<std::uint8_t>& img, int width, int x0, int y0, int cell, std::uint8_t r, std::uint8_t g, std::uint8_t b)
+{
+  for (int t = 0; t < 3; ++t)
+    for (int i = 0; i < cell; ++i)
+      for (const auto& xy : {std::make_pair (x0 + i, y0 + t), std::make_pair (x0 + i, y0 + cell - 1 - t), std::make_pair (x0 + t, y0 + i),
+                             std::make_pair (x0 + cell - 1 - t, y0 + i)})
+      {
+        const std::size_t at = 3 * (static_cast<std::size_t> (xy.second) * static_cast<std::size_t> (width) + static_cast<std::size_t> (xy.first));
+        img[at] = r;
+        img[at + 1] = g;
+        img[at + 2] = b;
+      }
+}
+} // namespace
+
+Status
+writeTopMatchesPng (const std::string& path, const std::vector<std::vector<Eigen::Vector3d>>& shapes,
+                    const std::vector<std::string>& labels, const std::vector<std::vector<double>>& similarity,
+                    const std::vector<std::size_t>& queries, int k, int cell)
+{
+  if (queries.empty () || k < 1 || cell < 16 || shapes.size () != similarity.size () || labels.size () != shapes.size ())
+    return Status::error ("cannot write " + path + ": nothing to draw");
+  const int width = (k + 1) * cell, height = static_cast<int> (queries.size ()) * cell;
+  std::vector<std::uint8_t> img (3 * static_cast<std::size_t> (width) * static_cast<std::size_t> (height), 255);
+  for (std::size_t row = 0; row < queries.size (); ++row)
+  {
+    const std::size_t q = queries[row];
+    const int y0 = static_cast<int> (row) * cell;
+    drawShape (img, width, 0, y0, cell, shapes[q]);
+    frame (img, width, 0, y0, cell, 40, 90, 220);
+    std::vector<std::size_t> order;
+    for (std::size_t j = 0; j < shapes.size (); ++j)
+      if (j != q)
+        order.push_back (j);
+    std::stable_sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) { return similarity[q][a] > similarity[q][b]; });
+    for (int r = 0; r < k && r < static_cast<int> (order.size ()); ++r)
+    {
+      const std::size_t j = order[static_cast<std::size_t> (r)];
+      drawShape (img, width, (r + 1) * cell, y0, cell, shapes[j]);
+      if (labels[j] == labels[q])
+        frame (img, width, (r + 1) * cell, y0, cell, 40, 170, 60);
+      else
+        frame (img, width, (r + 1) * cell, y0, cell, 220, 50, 40);
+    }
+  }
+  return writePng (path, width, height, 3, img);
 }
 
 Status

@@ -57,8 +57,17 @@ writeSimilarityCsv (const std::string& path, const std::vector<std::string>& nam
 Status
 writeSimilarityPng (const std::string& path, const std::vector<std::vector<double>>& similarity, int best = 5, int cell = 4);
 
-/** \brief Writes an 8-bit greyscale (channels = 1) or RGB (channels = 3) image as PNG (stored,
-  * uncompressed deflate: no zlib needed). Atomic. */
+/** \brief The paper's Figure 10: one row per query in \a queries, showing the query and its \a k
+  * most similar other shapes as point drawings (2D as they are, 3D projected onto their two main
+  * PCA axes), \a cell pixels each; frames: blue for the query, green for a match of the same class,
+  * red otherwise. RGB PNG. Atomic. */
+Status
+writeTopMatchesPng (const std::string& path, const std::vector<std::vector<Eigen::Vector3d>>& shapes,
+                    const std::vector<std::string>& labels, const std::vector<std::vector<double>>& similarity,
+                    const std::vector<std::size_t>& queries, int k = 5, int cell = 96);
+
+/** \brief Writes an 8-bit greyscale (channels = 1) or RGB (channels = 3) image as PNG (libpng).
+  * Atomic. */
 Status
 writePng (const std::string& path, int width, int height, int channels, const std::vector<std::uint8_t>& pixels);
 
