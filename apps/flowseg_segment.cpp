@@ -49,7 +49,8 @@ Options:
 Writes PREFIX.labels.pcd (PointXYZL, one point per input point, in input order; label = feature
 index, 4294967295 = none), PREFIX.json (counts, features, segments, adjacency, interior/exterior
 summary, timings in ms), PREFIX.ply (points, and 2D triangles, coloured by feature) and
-PREFIX.surface.ply (the reconstructed surface: 3D triangles, 2D interior triangles and the curve).
+PREFIX.surface.ply (the reconstructed surface: 3D triangles, 2D interior triangles and the curve)
+and, for 2D input, PREFIX.svg (triangles coloured by feature, Gabriel edges, curve, maxima).
 Exit status: 0 on success, 1 when the input cannot be read or segmented, 2 on bad options.
 )";
 }
@@ -250,6 +251,8 @@ main (int argc, char** argv)
                                               pcl_flowseg::writeSegmentationPly (prefix + ".ply", result, labels)};
   if (surface && separate)
     written.push_back (pcl_flowseg::writeSurfacePly (prefix + ".surface.ply", result));
+  if (result.dimension == 2)
+    written.push_back (pcl_flowseg::writeSegmentationSvg (prefix + ".svg", result));
   for (const auto& st : written)
   {
     if (!st)
@@ -280,8 +283,9 @@ main (int argc, char** argv)
                     result.interior.vertices_off_boundary, result.interior.smoothing_passes);
     std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, delaunay %.1f, flow %.1f, interior %.1f, merge %.1f, labels %.1f, total %.1f\n",
                   read_ms, t.preparation_ms, t.delaunay_ms, t.flow_ms, t.interior_ms, t.merge_ms, t.labels_ms, t.total_ms);
-    std::fprintf (stderr, "wrote %s.labels.pcd, %s.json, %s.ply%s\n", prefix.c_str (), prefix.c_str (), prefix.c_str (),
-                  surface && separate ? (", " + prefix + ".surface.ply").c_str () : "");
+    std::fprintf (stderr, "wrote %s.labels.pcd, %s.json, %s.ply%s%s\n", prefix.c_str (), prefix.c_str (), prefix.c_str (),
+                  surface && separate ? (", " + prefix + ".surface.ply").c_str () : "",
+                  result.dimension == 2 ? (", " + prefix + ".svg").c_str () : "");
   }
   return 0;
 }

@@ -8,6 +8,7 @@
 
 #include <pcl/io/pcd_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -250,6 +251,88 @@ writeSegmentationPly (const std::string& path, const FlowResult& r, const pcl::P
         out << " " << int (c[0]) << " " << int (c[1]) << " " << int (c[2]) << "\n";
       }
     }
+    return finish (out);
+  });
+}
+
+Status
+writeSegmentationSvg (const std::string& path, const FlowResult& r)
+{
+  if (r.dimension != 2)
+    return Status::error ("cannot write " + path + ": SVG output is for 2D results");
+  // Plane coordinates: an orthonormal basis of the points' plane (the z = const plane when it is one).
+  Eigen::Vector3d o = r.vertices.front (), u = Eigen::Vector3d::UnitX (), v = Eigen::Vector3d::UnitY ();
+  if (!r.cells.empty ())
+  {
+    const FlowCell& c = r.cells.front ();
+    const Eigen::Vector3d n = (r.vertices[static_cast<std::size_t> (c.vertices[1])] - r.vertices[static_cast<std::size_t> (c.vertices[0])])
+                                  .cross (r.vertices[static_cast<std::size_t> (c.vertices[2])] - r.vertices[static_cast<std::size_t> (c.vertices[0])])
+                                  .normalized ();
+    if (std::abs (n.z ()) < 0.999)
+    {
+      u = n.cross (Eigen::Vector3d::UnitZ ()).normalized ();
+      v = n.cross (u).normalized ();
+    }
+  }
+  std::vector<Eigen::Vector2d> p2;
+  Eigen::Vector2d lo (1e300, 1e300), hi (-1e300, -1e300);
+  for (const auto& x : r.vertices)
+  {
+    p2.emplace_back ((x - o).dot (u), (x - o).dot (v));
+    lo = lo.cwiseMin (p2.back ());
+    hi = hi.cwiseMax (p2.back ());
+  }
+  const double span = std::max ({hi.x () - lo.x (), hi.y () - lo.y (), 1e-300});
+  const double scale = 760.0 / span;
+  auto X = [&] (int i) { return 20 + (p2[static_cast<std::size_t> (i)].x () - lo.x ()) * scale; };
+  auto Y = [&] (int i) { return 20 + (hi.y () - p2[static_cast<std::size_t> (i)].y ()) * scale; };
+  std::vector<int> feature_of_segment (r.segments.size (), -1);
+  for (std::size_t k = 0; k < r.features.size (); ++k)
+    feature_of_segment[static_cast<std::size_t> (r.features[k])] = static_cast<int> (k);
+  return writeFileAtomically (path, [&] (const std::string& tmp) {
+    std::ofstream out (tmp);
+    if (!out)
+      return Status::error ("cannot create file");
+    const int w = static_cast<int> (40 + (hi.x () - lo.x ()) * scale), h = static_cast<int> (40 + (hi.y () - lo.y ()) * scale);
+    out << std::fixed << std::setprecision (2);
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h << "\" viewBox=\"0 0 " << w << " " << h
+        << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<g stroke-width=\"0.4\">\n";
+    for (const FlowCell& c : r.cells)
+    {
+      const int f = feature_of_segment[static_cast<std::size_t> (c.segment)];
+      const auto col = f < 0 ? std::array<std::uint8_t, 3>{{235, 235, 235}} : segmentColour (static_cast<std::uint32_t> (f), r.segments[static_cast<std::size_t> (c.segment)].flows_to_infinity);
+      out << "<polygon points=\"" << X (c.vertices[0]) << "," << Y (c.vertices[0]) << " " << X (c.vertices[1]) << "," << Y (c.vertices[1]) << " "
+          << X (c.vertices[2]) << "," << Y (c.vertices[2]) << "\" fill=\"rgb(" << int (col[0]) << "," << int (col[1]) << "," << int (col[2])
+          << ")\" stroke=\"rgb(" << int (col[0]) << "," << int (col[1]) << "," << int (col[2]) << ")\"/>\n";
+    }
+    out << "</g>\n<g stroke=\"black\" stroke-width=\"0.6\">\n";
+    for (const FlowCell& c : r.cells)
+      for (int i = 0; i < 3; ++i)
+      {
+        const int nb = c.neighbors[i];
+        if (nb < 0 || r.cells[static_cast<std::size_t> (nb)].manifold == c.manifold || &c > &r.cells[static_cast<std::size_t> (nb)])
+          continue;
+        const int a = c.vertices[(i + 1) % 3], b = c.vertices[(i + 2) % 3];
+        out << "<line x1=\"" << X (a) << "\" y1=\"" << Y (a) << "\" x2=\"" << X (b) << "\" y2=\"" << Y (b) << "\"/>\n";
+      }
+    out << "</g>\n<g stroke=\"#1f4fd0\" stroke-width=\"1.6\">\n";
+    for (const auto& e : boundaryFacets (r))
+      out << "<line x1=\"" << X (e[0]) << "\" y1=\"" << Y (e[0]) << "\" x2=\"" << X (e[1]) << "\" y2=\"" << Y (e[1]) << "\"/>\n";
+    out << "</g>\n<g fill=\"black\">\n";
+    for (std::size_t i = 0; i < p2.size (); ++i)
+      out << "<circle cx=\"" << X (static_cast<int> (i)) << "\" cy=\"" << Y (static_cast<int> (i)) << "\" r=\"1\"/>\n";
+    out << "</g>\n<g fill=\"#d02020\">\n";
+    for (int k : r.features)
+    {
+      const FlowSegment& s = r.segments[static_cast<std::size_t> (k)];
+      for (int m : s.maxima)
+      {
+        const Eigen::Vector3d& x = r.maxima[static_cast<std::size_t> (m)].location;
+        out << "<circle cx=\"" << 20 + ((x - o).dot (u) - lo.x ()) * scale << "\" cy=\"" << 20 + (hi.y () - (x - o).dot (v)) * scale
+            << "\" r=\"2.5\"/>\n";
+      }
+    }
+    out << "</g>\n</svg>\n";
     return finish (out);
   });
 }

@@ -157,5 +157,32 @@ fi
 expect "eval missing root" 1 "cannot open" -- "$ev" "$work/none" -o "$work/eval2"
 expect "eval no output" 2 "output" -- "$ev" "$work/tree"
 
+# --- signature, match, 2D SVG, viewer -----------------------------------------------------------
+sig="$build/apps/flowseg_signature"
+mat="$build/apps/flowseg_match"
+expect "signature" 0 "significant features" -- "$sig" "$src/samples/snowman3d.pcd"
+expect "signature json" 0 '"points": \[' -- "$sig" "$src/samples/animal3d.pcd" --json
+expect "signature bad option" 2 "unknown option" -- "$sig" "$src/samples/animal3d.pcd" --frob
+expect "signature missing file" 1 "cannot open" -- "$sig" "$work/none.pcd"
+expect "match itself" 0 "similarity 1.0000" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/animal3d.pcd"
+expect "match two" 0 "similarity" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --no-mirror
+expect "match one input" 2 "two inputs" -- "$mat" "$src/samples/animal3d.pcd"
+expect "match bad threshold" 2 "threshold" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --threshold -1
+expect "2D writes SVG" 0 "svg" -- "$seg" "$src/samples/star2d.pcd" -o "$work/star"
+head -c 4 "$work/star.svg" | grep -q '<svg'; check "SVG starts with <svg" $?
+grep -q '</svg>' "$work/star.svg"; check "SVG is complete" $?
+if [ -x "$build/apps/flowseg_view" ]; then
+  view="$build/apps/flowseg_view"
+  expect "view help" 0 "screenshot" -- "$view" --help
+  expect "view missing file" 1 "cannot open" -- "$view" "$work/none.pcd" --screenshot "$work/x.png"
+  expect "view bad screenshot name" 2 "png" -- "$view" "$src/samples/animal3d.pcd" --screenshot "$work/x.jpg"
+  if command -v xvfb-run >/dev/null 2>&1; then
+    expect "view screenshot" 0 "wrote" -- xvfb-run -a -s "-screen 0 1024x768x24" "$view" "$src/samples/animal3d.pcd" --surface --size 300x300 --screenshot "$work/animal.png"
+    [ "$(head -c 8 "$work/animal.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]; check "screenshot is a PNG" $?
+  else
+    echo "SKIPPED: view screenshot (xvfb-run is not installed)"
+  fi
+fi
+
 echo "apps: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -51,6 +51,13 @@ Status
 writeSegmentationPly (const std::string& path, const FlowResult& result,
                       const pcl::PointCloud<pcl::PointXYZL>& labels);
 
+/** \brief Writes a 2D result as SVG, which a browser shows: the Delaunay triangles coloured by
+  * feature (others light grey), the edges between stable manifolds (Gabriel edges, the exact
+  * boundaries of the stable manifolds in 2D) in black, the reconstructed curve in blue, the sample
+  * points and the maxima of the features (red dots). Fails for 3D results. Atomic. */
+Status
+writeSegmentationSvg (const std::string& path, const FlowResult& result);
+
 /** \brief The interior/exterior boundary as triangles (3D; oriented so that their normals point
   * out of the interior) or edges (2D; each edge listed with the interior on its left), over the
   * vertices of \a result. Empty when interior/exterior separation was not run. */
