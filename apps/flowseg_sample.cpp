@@ -4,6 +4,7 @@
  */
 #include <pcl_flowseg/mesh_sampling.h>
 #include <pcl_flowseg/result_writer.h>
+#include <pcl_flowseg/silhouette.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -14,9 +15,11 @@ namespace {
 void
 printHelp ()
 {
-  std::cout << R"(Usage: flowseg_sample MESH -o OUTPUT.pcd [options]
+  std::cout << R"(Usage: flowseg_sample INPUT -o OUTPUT.pcd [options]
 
-Samples points area-uniformly on the faces of a triangle mesh (.off, .obj, .ply).
+Samples points area-uniformly on the faces of a triangle mesh (.off, .obj, .ply), or takes the
+boundary of the silhouette in a binary image (.png, .bmp, .pgm: the pixel-edge midpoints between
+the shape and the background, in pixel units, z = 0; --points, --noise and --seed do not apply).
 
 Options:
   -o, --output FILE   output point cloud (.pcd), required
@@ -84,19 +87,42 @@ main (int argc, char** argv)
     else if (input.empty ())
       input = a;
     else
-      return usageError ("more than one input mesh");
+      return usageError ("more than one input");
   }
   if (input.empty () || output.empty ())
-    return usageError ("need a MESH and --output FILE");
-  pcl_flowseg::TriangleMesh mesh;
-  const auto loaded = pcl_flowseg::loadTriangleMesh (input, mesh);
-  if (!loaded)
+    return usageError ("need an INPUT and --output FILE");
+  std::vector<Eigen::Vector3d> pts;
+  std::string what;
+  if (pcl_flowseg::isSilhouetteFile (input))
   {
-    std::cerr << "flowseg_sample: " << loaded.message << "\n";
-    return 1;
+    pcl_flowseg::GreyImage image;
+    const auto loaded = pcl_flowseg::loadGreyImage (input, image);
+    if (!loaded)
+    {
+      std::cerr << "flowseg_sample: " << loaded.message << "\n";
+      return 1;
+    }
+    pts = pcl_flowseg::silhouetteBoundary (image);
+    if (pts.empty ())
+    {
+      std::cerr << "flowseg_sample: " << input << ": the image holds no silhouette\n";
+      return 1;
+    }
+    what = "the silhouette boundary of a " + std::to_string (image.width) + "x" + std::to_string (image.height) + " image";
   }
-  const double sigma = noise * mesh.diagonal ();
-  const auto pts = pcl_flowseg::sampleMeshSurface (mesh, count, sigma, static_cast<std::uint32_t> (seed));
+  else
+  {
+    pcl_flowseg::TriangleMesh mesh;
+    const auto loaded = pcl_flowseg::loadTriangleMesh (input, mesh);
+    if (!loaded)
+    {
+      std::cerr << "flowseg_sample: " << loaded.message << "\n";
+      return 1;
+    }
+    const double sigma = noise * mesh.diagonal ();
+    pts = pcl_flowseg::sampleMeshSurface (mesh, count, sigma, static_cast<std::uint32_t> (seed));
+    what = std::to_string (mesh.faces.size ()) + " faces, noise sigma " + std::to_string (sigma);
+  }
   pcl::PointCloud<pcl::PointXYZ> cloud;
   for (const auto& p : pts)
     cloud.push_back (pcl::PointXYZ (static_cast<float> (p.x ()), static_cast<float> (p.y ()), static_cast<float> (p.z ())));
@@ -106,7 +132,6 @@ main (int argc, char** argv)
     std::cerr << "flowseg_sample: " << st.message << "\n";
     return 1;
   }
-  std::cerr << "wrote " << output << ": " << pts.size () << " points on " << mesh.faces.size () << " faces (area "
-            << mesh.area () << "), noise sigma " << sigma << "\n";
+  std::cerr << "wrote " << output << ": " << pts.size () << " points from " << what << "\n";
   return 0;
 }

@@ -33,6 +33,8 @@ Options:
   -r, --rho R            merge threshold rho > 0 (default )" << pcl_flowseg::kDefaultRho << R"(); < 1 merges nothing
   -d, --dimension D      auto | 2 | 3 (default auto: 2D when all points lie on one plane)
   -f, --features SIDE    interior | exterior | both (default interior: the shape's features)
+      --significance F   features above this share of the reported volume are marked
+                         "significant" in the JSON and counted in the summary (default )" << pcl_flowseg::kDefaultSignificance << R"()
       --no-interior      skip interior/exterior separation: the paper's raw segmentation of the
                          whole convex hull, every segment reported
       --denoise MODE     auto | off | on: smooth noisy samples before separating interior and
@@ -90,6 +92,7 @@ main (int argc, char** argv)
   pcl_flowseg::FeatureSide side = pcl_flowseg::FeatureSide::Interior;
   pcl_flowseg::Denoising denoise = pcl_flowseg::Denoising::Automatic;
   bool has_viewpoint = false;
+  double significance = pcl_flowseg::kDefaultSignificance;
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero ();
 
   for (int i = 1; i < argc; ++i)
@@ -134,6 +137,11 @@ main (int argc, char** argv)
       else if (v == "exterior") side = pcl_flowseg::FeatureSide::Exterior;
       else if (v == "both") side = pcl_flowseg::FeatureSide::Both;
       else return usageError ("--features must be interior, exterior or both, got '" + v + "'");
+    }
+    else if (arg == "--significance")
+    {
+      if (!value (v) || !parseDouble (v, significance) || significance < 0 || significance >= 1)
+        return usageError ("--significance needs a fraction in [0, 1), got '" + v + "'");
     }
     else if (arg == "--no-interior")
       separate = false;
@@ -246,6 +254,7 @@ main (int argc, char** argv)
   info.input = input;
   info.rho = rho;
   info.read_ms = read_ms;
+  info.significance = significance;
   std::vector<pcl_flowseg::Status> written = {pcl_flowseg::writeLabelCloud (prefix + ".labels.pcd", labels, binary),
                                               pcl_flowseg::writeSegmentationJson (prefix + ".json", result, info),
                                               pcl_flowseg::writeSegmentationPly (prefix + ".ply", result, labels)};
@@ -265,17 +274,22 @@ main (int argc, char** argv)
   if (!quiet)
   {
     const auto& t = result.timings;
-    std::size_t interior = 0, unlabelled = 0;
+    std::size_t interior = 0, unlabelled = 0, significant = 0;
+    double reported = 0;
+    for (int k : result.features)
+      reported += result.segments[static_cast<std::size_t> (k)].volume;
+    for (int k : result.features)
+      significant += result.segments[static_cast<std::size_t> (k)].volume > significance * reported;
     for (const auto& s : result.segments)
       interior += s.interior == 1;
     for (std::size_t i = 0; i < result.point_labels.size (); ++i)
       unlabelled += result.point_labels[i] == pcl_flowseg::kNoSegment && result.point_to_vertex[i] >= 0;
     std::fprintf (stderr,
                   "%dD: %zu points (%zu non-finite, %zu duplicates), %zu cells, %zu maxima, "
-                  "%zu segments after merging with rho=%g (%zu interior), %zu features reported, %zu points unlabelled\n",
+                  "%zu segments after merging with rho=%g (%zu interior), %zu features reported (%zu significant), %zu points unlabelled\n",
                   result.dimension, result.input_points, result.non_finite_points, result.duplicate_points,
                   result.cells.size (), result.maxima.size (), result.segments.size (), rho, interior,
-                  result.features.size (), unlabelled);
+                  result.features.size (), significant, unlabelled);
     if (result.interior.computed)
       std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s, %zu samples off the boundary, %d smoothing pass(es)\n",
                     result.interior.inside_volume, result.interior.inside_cells, result.interior.boundary_facets,

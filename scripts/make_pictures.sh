@@ -22,8 +22,11 @@ for n in 2301 25626; do
 done
 # A 2D silhouette (Kimia-216), as the SVG flowseg_segment writes.
 tmp=$(mktemp -d)
-"$build/apps/flowseg_sample" --help >/dev/null
 "$build/apps/flowseg_segment" samples/hand2d.pcd -o "$tmp/hand2d" -q
 rsvg-convert -w 420 "$tmp/hand2d.svg" -o "$out/hand2d_svg.png"
+# A silhouette image: its boundary sample, segmented (Kimia-216, a camel).
+"$build/apps/flowseg_sample" "$data/2d/kimia216/camel/camel-1.bmp" -o "$tmp/camel.pcd"
+"$build/apps/flowseg_segment" "$tmp/camel.pcd" -o "$tmp/camel" -q
+rsvg-convert -w 420 "$tmp/camel.svg" -o "$out/kimia_camel_svg.png"
 rm -rf "$tmp"
 ls -la "$out"

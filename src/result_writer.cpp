@@ -154,12 +154,20 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
           << ", \"surface_variation\": " << (in.surface_variation < 0 ? std::string ("null") : num (in.surface_variation)) << ", \"smoothing_passes\": " << in.smoothing_passes
           << ", \"ray_cells\": " << in.ray_cells;
     out << "},\n";
+    double reported = 0.0;
+    for (int k : r.features)
+      reported += r.segments[static_cast<std::size_t> (k)].volume;
+    std::vector<char> is_feature (r.segments.size (), 0);
+    for (int k : r.features)
+      is_feature[static_cast<std::size_t> (k)] = 1;
+    out << "  \"significance\": " << num (info.significance) << ",\n";
     out << "  \"segments\": [";
     for (std::size_t k = 0; k < r.segments.size (); ++k)
     {
       const FlowSegment& s = r.segments[k];
       out << (k ? ",\n" : "\n") << "    {\"id\": " << k << ", \"flows_to_infinity\": " << (s.flows_to_infinity ? "true" : "false")
           << ", \"interior\": " << (s.interior == 1 ? "true" : s.interior == 0 ? "false" : "null")
+          << ", \"significant\": " << (is_feature[k] && s.volume > info.significance * reported ? "true" : "false")
           << ", \"volume\": " << num (s.volume) << ", \"centroid\": " << vec (s.centroid, d)
           << ", \"point_count\": " << s.point_count << ", \"cell_count\": " << s.cell_count
           << ", \"maxima_merged\": " << s.maxima.size () << ", \"maximum_height\": " << num (s.maximum.height);

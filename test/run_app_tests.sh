@@ -50,6 +50,7 @@ assert sum(s["point_count"] for s in d["segments"]) + d["unlabelled_points"] == 
 assert d["interior"]["computed"] and d["interior"]["closed"], "closed interior"
 assert all(d["segments"][k]["interior"] for k in d["features"]["segments"]), "features are interior"
 assert "interior" in d["timings_ms"], "interior timing"
+assert any(s["significant"] for s in d["segments"]), "significant features marked"
 assert all(k in d["timings_ms"] for k in ("delaunay", "flow", "merge", "total")), "timings"
 PY
     check "$name: JSON well-formed and consistent" $?
@@ -68,6 +69,7 @@ expect "rho missing value" 2 "rho" -- "$seg" "$src/samples/hand2d.pcd" --rho
 expect "dimension absurd" 2 "dimension" -- "$seg" "$src/samples/hand2d.pcd" --dimension 5
 expect "unknown option" 2 "unknown option" -- "$seg" "$src/samples/hand2d.pcd" --frobnicate
 expect "features absurd" 2 "features" -- "$seg" "$src/samples/hand2d.pcd" --features sideways
+expect "significance absurd" 2 "significance" -- "$seg" "$src/samples/hand2d.pcd" --significance 1.5
 expect "denoise absurd" 2 "denoise" -- "$seg" "$src/samples/hand2d.pcd" --denoise maybe
 expect "viewpoint malformed" 2 "viewpoint" -- "$seg" "$src/samples/hand2d.pcd" --viewpoint 1,2
 expect "viewpoint not finite" 2 "viewpoint" -- "$seg" "$src/samples/hand2d.pcd" --viewpoint 1,nan,3
@@ -117,6 +119,11 @@ expect "sampler missing mesh" 1 "cannot open" -- "$smp" "$work/none.off" -o "$wo
 expect "sampler bad count" 2 "points" -- "$smp" "$work/tet.off" -n 0 -o "$work/x.pcd"
 expect "sampler bad noise" 2 "noise" -- "$smp" "$work/tet.off" --noise -1 -o "$work/x.pcd"
 expect "sampler no output" 2 "output" -- "$smp" "$work/tet.off"
+printf 'P2\n5 5\n255\n255 255 255 255 255\n255 0 0 0 255\n255 0 0 0 255\n255 0 0 0 255\n255 255 255 255 255\n' > "$work/square.pgm"
+expect "sample a silhouette image" 0 "silhouette boundary" -- "$smp" "$work/square.pgm" -o "$work/square.pcd"
+[ "$(grep -m1 '^POINTS' "$work/square.pcd" | awk '{print $2}')" = "12" ]; check "a 3x3 square has 12 boundary edge midpoints" $?
+printf 'P5\n5 5\n255\nxy' > "$work/short.pgm"
+expect "sample a truncated image" 1 "truncated" -- "$smp" "$work/short.pgm" -o "$work/x.pcd"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/broken.off"
 expect "sampler corrupt mesh" 1 "vertex" -- "$smp" "$work/broken.off" -o "$work/x.pcd"
 
@@ -156,6 +163,9 @@ PY
 fi
 expect "eval missing root" 1 "cannot open" -- "$ev" "$work/none" -o "$work/eval2"
 expect "eval no output" 2 "output" -- "$ev" "$work/tree"
+expect "eval absurd option" 2 "rho" -- "$ev" "$work/tree" -o "$work/eval3" --rho -2
+mkdir -p "$work/badtree/x"; cp "$work/corrupt.pcd" "$work/badtree/x/"
+expect "eval corrupt file" 1 "not a PCD" -- "$ev" "$work/badtree" -o "$work/eval4"
 
 # --- signature, match, 2D SVG, viewer -----------------------------------------------------------
 sig="$build/apps/flowseg_signature"
@@ -164,9 +174,12 @@ expect "signature" 0 "significant features" -- "$sig" "$src/samples/snowman3d.pc
 expect "signature json" 0 '"points": \[' -- "$sig" "$src/samples/animal3d.pcd" --json
 expect "signature bad option" 2 "unknown option" -- "$sig" "$src/samples/animal3d.pcd" --frob
 expect "signature missing file" 1 "cannot open" -- "$sig" "$work/none.pcd"
+expect "signature corrupt file" 1 "not a PCD" -- "$sig" "$work/corrupt.pcd"
 expect "match itself" 0 "similarity 1.0000" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/animal3d.pcd"
 expect "match two" 0 "similarity" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --no-mirror
 expect "match one input" 2 "two inputs" -- "$mat" "$src/samples/animal3d.pcd"
+expect "match corrupt file" 1 "not a PCD" -- "$mat" "$src/samples/animal3d.pcd" "$work/corrupt.pcd"
+expect "match missing file" 1 "cannot open" -- "$mat" "$work/none.pcd" "$src/samples/animal3d.pcd"
 expect "match bad threshold" 2 "threshold" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --threshold -1
 expect "2D writes SVG" 0 "svg" -- "$seg" "$src/samples/star2d.pcd" -o "$work/star"
 head -c 4 "$work/star.svg" | grep -q '<svg'; check "SVG starts with <svg" $?
@@ -176,6 +189,8 @@ if [ -x "$build/apps/flowseg_view" ]; then
   expect "view help" 0 "screenshot" -- "$view" --help
   expect "view missing file" 1 "cannot open" -- "$view" "$work/none.pcd" --screenshot "$work/x.png"
   expect "view bad screenshot name" 2 "png" -- "$view" "$src/samples/animal3d.pcd" --screenshot "$work/x.jpg"
+  expect "view corrupt file" 1 "not a PCD" -- "$view" "$work/corrupt.pcd" --screenshot "$work/x.png"
+  expect "view absurd size" 2 "size" -- "$view" "$src/samples/animal3d.pcd" --size 5x5 --screenshot "$work/x.png"
   if command -v xvfb-run >/dev/null 2>&1; then
     expect "view screenshot" 0 "wrote" -- xvfb-run -a -s "-screen 0 1024x768x24" "$view" "$src/samples/animal3d.pcd" --surface --size 300x300 --screenshot "$work/animal.png"
     [ "$(head -c 8 "$work/animal.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]; check "screenshot is a PNG" $?

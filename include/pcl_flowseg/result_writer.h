@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_flowseg/flow_result.h>
+#include <pcl_flowseg/signature.h>
 #include <pcl_flowseg/status.h>
 
 #include <pcl/point_cloud.h>
@@ -34,6 +35,8 @@ struct RunInfo
 {
   std::string input;   ///< input file name
   double rho = 0.0;    ///< merge threshold used
+  /** Features above this share of the reported features' volume are marked "significant". */
+  double significance = kDefaultSignificance;
   double read_ms = 0.0;
 };
 
