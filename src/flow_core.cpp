@@ -15,6 +15,8 @@
 #include <Eigen/LU>
 
 #include <chrono>
+#include <cstdio>
+#include <fstream>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -74,6 +76,25 @@ failure (FlowResult& result, const std::string& message)
 }
 } // namespace
 
+std::size_t
+estimateSegmentationMemory (std::size_t points, int dimension)
+{
+  return points * (dimension == 2 ? 1024u : 3072u);
+}
+
+std::size_t
+availableMemory ()
+{
+  std::ifstream meminfo ("/proc/meminfo");
+  std::string key;
+  std::size_t value = 0;
+  std::string unit;
+  while (meminfo >> key >> value >> unit)
+    if (key == "MemAvailable:")
+      return value * 1024;
+  return 0;
+}
+
 Status
 remergeFlowSegmentation (double rho, FlowResult& result)
 {
@@ -105,6 +126,19 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
                                 std::to_string (points.size ()) + " points");
   if (params.use_viewpoint && !params.viewpoint.allFinite ())
     return failure (result, "the viewpoint has non-finite coordinates");
+  {
+    const std::size_t limit = params.memory_limit ? params.memory_limit : availableMemory ();
+    const int dim = params.dimension == DimensionMode::Planar ? 2 : 3;
+    const std::size_t need = estimateSegmentationMemory (points.size (), dim);
+    if (limit > 0 && need > limit)
+    {
+      char message[256];
+      std::snprintf (message, sizeof (message),
+                     "%zu points need about %.1f GiB to segment, more than the %.1f GiB available: refused before starting",
+                     points.size (), need / 1073741824.0, limit / 1073741824.0);
+      return failure (result, message);
+    }
+  }
   auto report = [&] (const char* stage, double fraction) {
     if (progress)
       progress (stage, fraction);

@@ -82,7 +82,7 @@ loadOff (const std::string& path, std::istream& in, TriangleMesh& mesh)
   }
   if (nv < 0 || nf < 0 || nv > 100000000 || nf > 200000000)
     return Status::error (path + ": invalid vertex/face counts");
-  mesh.vertices.reserve (static_cast<std::size_t> (nv));
+  mesh.vertices.reserve (std::min<std::size_t> (static_cast<std::size_t> (nv), 1u << 20));
   for (long long k = 0; k < nv; ++k)
   {
     double x, y, z;
@@ -194,7 +194,15 @@ loadTriangleMesh (const std::string& path, TriangleMesh& mesh)
   std::ifstream in (path);
   if (!in)
     return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
-  Status s = ext == "off" ? loadOff (path, in, mesh) : ext == "obj" ? loadObj (path, in, mesh) : loadPly (path, mesh);
+  Status s;
+  try
+  {
+    s = ext == "off" ? loadOff (path, in, mesh) : ext == "obj" ? loadObj (path, in, mesh) : loadPly (path, mesh);
+  }
+  catch (const std::bad_alloc&)
+  {
+    s = Status::error (path + ": out of memory while reading");
+  }
   if (s.ok && mesh.faces.empty ())
     s = Status::error (path + ": the mesh has no faces");
   if (!s.ok)

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <pcl_flowseg/point_io.h>
+#include <pcl_flowseg/flow_core.h>
 
 #include "file_names.h"
 
@@ -132,7 +133,7 @@ loadOff (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXY
   if (counts.empty () || counts[0] < 0 || counts[0] > 1e9 || counts[0] != static_cast<double> (static_cast<long long> (counts[0])))
     return Status::error (where (path, number) + "invalid vertex count");
   const std::size_t n = static_cast<std::size_t> (counts[0]);
-  cloud.reserve (n);
+  cloud.reserve (std::min<std::size_t> (n, 1u << 20)); // grows with the file, not with its claim
   std::vector<double> v;
   for (std::size_t k = 0; k < n; ++k)
   {
@@ -241,6 +242,9 @@ checkPcdHeader (const std::string& path)
     }
     point_bytes += count * std::stoll (size);
   }
+  const std::size_t available = availableMemory ();
+  if (available > 0 && static_cast<double> (points) * static_cast<double> (point_bytes + 16) > 0.5 * static_cast<double> (available))
+    return Status::error (path + ": " + std::to_string (points) + " points would not fit in the available memory: refused");
   if (data == "binary")
   {
     const std::streampos start = in.tellg ();
@@ -349,6 +353,8 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, 
     return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
 
   Status status;
+  try
+  {
   if (ext == "pcd" || ext == "ply")
   {
     in.close ();
@@ -360,6 +366,15 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, 
     status = loadObj (path, in, cloud);
   else
     status = loadText (path, in, cloud, normals);
+  }
+  catch (const std::bad_alloc&)
+  {
+    status = Status::error (path + ": out of memory while reading");
+  }
+  catch (const std::exception& e)
+  {
+    status = Status::error (path + ": " + e.what ());
+  }
 
   if (!status.ok)
   {

@@ -226,3 +226,30 @@ TEST (Degenerate, NonPlanarPointsForcedTo2DAreProjectedWithAWarning)
   EXPECT_FALSE (r.warnings.empty ());
   expectConsistent (r);
 }
+
+TEST (Degenerate, InputsThatWouldExceedMemoryAreRefusedUpFront)
+{
+  const auto pts = shapeSample ("snowman3d", 2000);
+  FlowParameters params;
+  params.memory_limit = 1 << 20; // 1 MiB
+  FlowResult r;
+  const Status s = runFlowSegmentation (pts, params, r);
+  EXPECT_FALSE (s.ok);
+  EXPECT_NE (s.message.find ("refused before starting"), std::string::npos) << s.message;
+  EXPECT_TRUE (r.cells.empty ());
+  // 100M points would need about 300 GB: more than this machine (or CI) reports available.
+  EXPECT_GT (estimateSegmentationMemory (100000000, 3), availableMemory ());
+  params.memory_limit = 0;
+  EXPECT_TRUE (runFlowSegmentation (pts, params, r).ok);
+}
+
+TEST (Degenerate, OnePointFarAway)
+{
+  auto pts = shapeSample ("dumbbell3d", 1500);
+  const FlowResult near = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, true);
+  pts.push_back (V (1e6, 1e6, 1e6));
+  const FlowResult far = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, true);
+  expectConsistent (far);
+  // The shape's interior is still found: the same inside volume within 1%.
+  EXPECT_NEAR (far.interior.inside_volume, near.interior.inside_volume, 0.01 * near.interior.inside_volume);
+}

@@ -158,6 +158,20 @@ TEST (PointIO, SharedCloudsLoadAndSegment)
   }
 }
 
+TEST (PointIO, AbsurdPointCountsAreRefused)
+{
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  const std::string header = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1500000000\nHEIGHT 1\n"
+                             "POINTS 1500000000\nDATA ascii\n0 0 0\n";
+  const Status s = loadPointCloud (dir.write ("huge.pcd", header), cloud);
+  EXPECT_FALSE (s.ok);
+  EXPECT_NE (s.message.find ("memory"), std::string::npos) << s.message;
+  const Status off = loadPointCloud (dir.write ("huge.off", "OFF\n900000000 0 0\n0 0 0\n"), cloud);
+  EXPECT_FALSE (off.ok);
+  EXPECT_NE (off.message.find ("ends after 1"), std::string::npos) << off.message;
+}
+
 TEST (PointIO, ClearErrors)
 {
   TempDir dir;
