@@ -5,6 +5,7 @@
 #include <pcl_flowseg/mesh_sampling.h>
 
 #include "file_names.h"
+#include "pcl_blob.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -145,7 +146,9 @@ loadPly (const std::string& path, TriangleMesh& mesh)
   if (pcl::io::loadPLYFile (path, poly) < 0)
     return Status::error (path + ": not a readable PLY file");
   pcl::PointCloud<pcl::PointXYZ> cloud;
-  pcl::fromPCLPointCloud2 (poly.cloud, cloud);
+  const Status read = pointsFromBlob (poly.cloud, path, cloud, nullptr);
+  if (!read)
+    return read;
   for (const auto& p : cloud)
     mesh.vertices.emplace_back (p.x, p.y, p.z);
   for (const auto& v : poly.polygons)

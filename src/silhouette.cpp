@@ -196,8 +196,16 @@ loadPgm (const std::string& path, GreyImage& image)
   const std::string magic = token ();
   if (magic != "P2" && magic != "P5")
     return Status::error (path + ": not a PGM file (P2 or P5)");
-  const long long w = std::atoll (token ().c_str ()), h = std::atoll (token ().c_str ()), maxval = std::atoll (token ().c_str ());
-  if (w <= 0 || h <= 0 || maxval <= 0 || maxval > 65535)
+  // Numbers are checked before any arithmetic on them (a width of 10^27 must not overflow).
+  auto header_number = [&] (long long& out) {
+    const std::string t = token ();
+    char* end = nullptr;
+    errno = 0;
+    out = std::strtoll (t.c_str (), &end, 10);
+    return !t.empty () && *end == '\0' && errno == 0 && out > 0 && out <= (1 << 20);
+  };
+  long long w = 0, h = 0, maxval = 0;
+  if (!header_number (w) || !header_number (h) || !header_number (maxval) || maxval > 65535)
     return Status::error (path + ": invalid PGM header");
   if (w * h > kMaxPixels)
     return Status::error (path + ": image too large");

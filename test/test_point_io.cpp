@@ -7,6 +7,9 @@
 #include <pcl_flowseg/flow_segmentation.h>
 #include <pcl_flowseg/point_io.h>
 #include <pcl_flowseg/result_writer.h>
+#include <pcl_flowseg/mesh_sampling.h>
+#include <pcl_flowseg/shape_input.h>
+#include <pcl_flowseg/silhouette.h>
 
 #include "atomic_file.h"
 
@@ -249,4 +252,24 @@ TEST (ResultWriter, SegmentationOutputsAreWellFormed)
   EXPECT_NE (ply.find ("element vertex 400\n"), std::string::npos); // the NaN point is not drawn
   EXPECT_NE (ply.find ("element face " + std::to_string (seg.getResult ().cells.size ())), std::string::npos);
   EXPECT_EQ (ply.find ("nan"), std::string::npos);
+}
+
+TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
+{
+  // Each file once crashed a reader (found by scripts/fuzz.sh); now each is refused with a message.
+  const std::string dir = std::string (PCL_FLOWSEG_SOURCE_DIR) + "/test/data/fuzz_regressions/";
+  std::size_t checked = 0;
+  for (const char* name : {"mesh_ply_header_27fc9764.ply", "pgm_huge_width_dcafbfbf.pgm"})
+  {
+    const std::string path = dir + name;
+    std::vector<Eigen::Vector3d> pts;
+    const Status s = loadShapeSample (path, ShapeInputOptions (), pts);
+    EXPECT_FALSE (s.ok) << name;
+    EXPECT_FALSE (s.message.empty ()) << name;
+    TriangleMesh mesh;
+    GreyImage image;
+    EXPECT_FALSE (loadTriangleMesh (path, mesh).ok && loadGreyImage (path, image).ok);
+    ++checked;
+  }
+  EXPECT_EQ (checked, 2u);
 }
