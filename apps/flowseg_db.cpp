@@ -2,6 +2,8 @@
  * flowseg_db: build, extend and query a database of shape signatures.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "app_common.h"
+
 #include <pcl_flowseg/flow_core.h>
 #include <pcl_flowseg/shape_input.h>
 #include <pcl_flowseg/signature_database.h>
@@ -46,10 +48,9 @@ Exit status: 0 success, 1 unreadable input or database, 2 bad options.
 }
 
 int
-usageError (const std::string& m)
+usageError (const std::string& message)
 {
-  std::cerr << "flowseg_db: " << m << "\n(see flowseg_db --help)\n";
-  return 2;
+  return flowseg_app::usageError ("flowseg_db", message);
 }
 
 struct Options
@@ -65,31 +66,14 @@ struct Options
   bool quiet = false;
 };
 
-bool
-number (const std::string& text, double& value)
-{
-  char* end = nullptr;
-  value = std::strtod (text.c_str (), &end);
-  return !text.empty () && *end == '\0' && std::isfinite (value);
-}
-
 /** Signature of one file; false with a message on failure. */
 bool
 signatureOfFile (const std::string& path, const Options& o, pcl_flowseg::Signature& s, std::string& error)
 {
-  std::vector<Eigen::Vector3d> pts;
-  pcl_flowseg::Status st = pcl_flowseg::loadShapeSample (path, o.input, pts);
-  if (st.ok)
-  {
-    pcl_flowseg::FlowParameters params;
-    params.rho = o.rho;
-    pcl_flowseg::FlowResult r;
-    st = pcl_flowseg::runFlowSegmentation (pts, params, r);
-    if (st.ok)
-      st = pcl_flowseg::signatureFromSegmentation (r, o.significance, s);
-  }
-  if (!st.ok)
-    error = st.message.find (path) == std::string::npos ? path + ": " + st.message : st.message;
+  pcl_flowseg::FlowParameters params;
+  params.rho = o.rho;
+  const auto st = pcl_flowseg::signatureOfShapeFile (path, o.input, params, o.significance, s);
+  error = st.message;
   return st.ok;
 }
 
@@ -160,19 +144,19 @@ main (int argc, char** argv)
       printHelp ();
       return 0;
     }
-    else if (a == "-k" && more && number (argv[i + 1], v) && v >= 0 && v == std::floor (v))
+    else if (a == "-k" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 0 && v == std::floor (v))
       o.k = static_cast<std::size_t> (v), ++i;
     else if (a == "--label" && more)
       o.label = argv[++i], o.has_label = true;
-    else if (a == "--rho" && more && number (argv[i + 1], v) && v > 0)
+    else if (a == "--rho" && more && flowseg_app::parseNumber (argv[i + 1], v) && v > 0)
       o.rho = v, ++i;
-    else if (a == "--significance" && more && number (argv[i + 1], v) && v >= 0 && v < 1)
+    else if (a == "--significance" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 0 && v < 1)
       o.significance = v, ++i;
-    else if (a == "--threshold" && more && number (argv[i + 1], v) && v > 0)
+    else if (a == "--threshold" && more && flowseg_app::parseNumber (argv[i + 1], v) && v > 0)
       o.threshold = v, ++i;
-    else if (a == "--mesh-points" && more && number (argv[i + 1], v) && v >= 4 && v <= 1e8 && v == std::floor (v))
+    else if (a == "--mesh-points" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 4 && v <= 1e8 && v == std::floor (v))
       o.input.mesh_points = static_cast<std::size_t> (v), ++i;
-    else if ((a == "-j" || a == "--jobs") && more && number (argv[i + 1], v) && v >= 1 && v <= 256 && v == std::floor (v))
+    else if ((a == "-j" || a == "--jobs") && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 1 && v <= 256 && v == std::floor (v))
       o.jobs = static_cast<unsigned> (v), ++i;
     else if (a == "-q" || a == "--quiet")
       o.quiet = true;

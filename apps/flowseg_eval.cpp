@@ -3,6 +3,8 @@
  * shape distribution and PCL's ESF descriptor, side by side.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "app_common.h"
+
 #include <pcl_flowseg/flow_core.h>
 #include <pcl_flowseg/retrieval.h>
 #include <pcl_flowseg/shape_input.h>
@@ -59,18 +61,9 @@ Options:
 }
 
 int
-usageError (const std::string& m)
+usageError (const std::string& message)
 {
-  std::cerr << "flowseg_eval: " << m << "\n(see flowseg_eval --help)\n";
-  return 2;
-}
-
-bool
-number (const std::string& text, double& value)
-{
-  char* end = nullptr;
-  value = std::strtod (text.c_str (), &end);
-  return !text.empty () && *end == '\0' && std::isfinite (value);
+  return flowseg_app::usageError ("flowseg_eval", message);
 }
 
 /** Runs job (i) for i in [0, n) on \a jobs threads, with a progress line. */
@@ -127,17 +120,17 @@ main (int argc, char** argv)
       out = argv[++i];
     else if (a == "--methods" && more)
       methods = argv[++i];
-    else if (a == "--rho" && more && number (argv[i + 1], v) && v > 0)
+    else if (a == "--rho" && more && flowseg_app::parseNumber (argv[i + 1], v) && v > 0)
       rho = v, ++i;
-    else if (a == "--significance" && more && number (argv[i + 1], v) && v >= 0 && v < 1)
+    else if (a == "--significance" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 0 && v < 1)
       significance = v, ++i;
-    else if (a == "--threshold" && more && number (argv[i + 1], v) && v > 0)
+    else if (a == "--threshold" && more && flowseg_app::parseNumber (argv[i + 1], v) && v > 0)
       threshold = v, ++i;
-    else if (a == "--alignment-points" && more && number (argv[i + 1], v) && v >= 1 && v <= 100 && v == std::floor (v))
+    else if (a == "--alignment-points" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 1 && v <= 100 && v == std::floor (v))
       alignment_points = static_cast<int> (v), ++i;
-    else if (a == "--mesh-points" && more && number (argv[i + 1], v) && v >= 4 && v <= 1e8 && v == std::floor (v))
+    else if (a == "--mesh-points" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 4 && v <= 1e8 && v == std::floor (v))
       input.mesh_points = static_cast<std::size_t> (v), ++i;
-    else if ((a == "-j" || a == "--jobs") && more && number (argv[i + 1], v) && v >= 1 && v <= 256 && v == std::floor (v))
+    else if ((a == "-j" || a == "--jobs") && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 1 && v <= 256 && v == std::floor (v))
       jobs = static_cast<unsigned> (v), ++i;
     else if (a == "-q" || a == "--quiet")
       quiet = true;

@@ -17,17 +17,11 @@ namespace {
 bool
 signatureOf (const std::string& path, double rho, double significance, const pcl_flowseg::ShapeInputOptions& in, pcl_flowseg::Signature& s)
 {
-  std::vector<Eigen::Vector3d> pts;
   pcl_flowseg::FlowParameters params;
   params.rho = rho;
-  pcl_flowseg::FlowResult r;
-  pcl_flowseg::Status st = pcl_flowseg::loadShapeSample (path, in, pts);
-  if (st.ok)
-    st = pcl_flowseg::runFlowSegmentation (pts, params, r);
-  if (st.ok)
-    st = pcl_flowseg::signatureFromSegmentation (r, significance, s);
+  const auto st = pcl_flowseg::signatureOfShapeFile (path, in, params, significance, s);
   if (!st.ok)
-    std::cerr << "flowseg_match: " << (st.message.find (path) == std::string::npos ? path + ": " : "") << st.message << "\n";
+    std::cerr << "flowseg_match: " << st.message << "\n";
   return st.ok;
 }
 } // namespace

@@ -2,6 +2,8 @@
  * flowseg_sample: area-uniform point samples of a triangle mesh, with optional Gaussian noise.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "app_common.h"
+
 #include <pcl_flowseg/mesh_sampling.h>
 #include <pcl_flowseg/result_writer.h>
 #include <pcl_flowseg/silhouette.h>
@@ -33,10 +35,9 @@ Options:
 }
 
 int
-usageError (const std::string& m)
+usageError (const std::string& message)
 {
-  std::cerr << "flowseg_sample: " << m << "\n(see flowseg_sample --help)\n";
-  return 2;
+  return flowseg_app::usageError ("flowseg_sample", message);
 }
 } // namespace
 

@@ -3,6 +3,8 @@
  * discretization and writes labels (PCD), a summary (JSON) and a coloured PLY.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "app_common.h"
+
 #include <pcl_flowseg/flow_segmentation.h>
 #include <pcl_flowseg/point_io.h>
 #include <pcl_flowseg/result_writer.h>
@@ -57,14 +59,6 @@ Exit status: 0 on success, 1 when the input cannot be read or segmented, 2 on ba
 )";
 }
 
-bool
-parseDouble (const std::string& text, double& value)
-{
-  char* end = nullptr;
-  value = std::strtod (text.c_str (), &end);
-  return !text.empty () && end && *end == '\0' && std::isfinite (value);
-}
-
 std::string
 stripExtension (const std::string& path)
 {
@@ -76,8 +70,7 @@ stripExtension (const std::string& path)
 int
 usageError (const std::string& message)
 {
-  std::cerr << "flowseg_segment: " << message << "\n(see flowseg_segment --help)\n";
-  return 2;
+  return flowseg_app::usageError ("flowseg_segment", message);
 }
 
 } // namespace
@@ -112,7 +105,7 @@ main (int argc, char** argv)
     }
     else if (arg == "-r" || arg == "--rho")
     {
-      if (!value (v) || !parseDouble (v, rho) || rho <= 0.0)
+      if (!value (v) || !flowseg_app::parseNumber (v, rho) || rho <= 0.0)
         return usageError ("--rho needs a finite number > 0, got '" + v + "'");
     }
     else if (arg == "-d" || arg == "--dimension")
@@ -140,7 +133,7 @@ main (int argc, char** argv)
     }
     else if (arg == "--significance")
     {
-      if (!value (v) || !parseDouble (v, significance) || significance < 0 || significance >= 1)
+      if (!value (v) || !flowseg_app::parseNumber (v, significance) || significance < 0 || significance >= 1)
         return usageError ("--significance needs a fraction in [0, 1), got '" + v + "'");
     }
     else if (arg == "--no-interior")

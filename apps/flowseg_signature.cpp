@@ -60,19 +60,13 @@ main (int argc, char** argv)
     std::cerr << "flowseg_signature: no input file given (see --help)\n";
     return 2;
   }
-  std::vector<Eigen::Vector3d> pts;
   pcl_flowseg::Signature s;
-  pcl_flowseg::FlowResult r;
   pcl_flowseg::FlowParameters params;
   params.rho = rho;
-  pcl_flowseg::Status st = pcl_flowseg::loadShapeSample (input, in, pts);
-  if (st.ok)
-    st = pcl_flowseg::runFlowSegmentation (pts, params, r);
-  if (st.ok)
-    st = pcl_flowseg::signatureFromSegmentation (r, significance, s);
+  const pcl_flowseg::Status st = pcl_flowseg::signatureOfShapeFile (input, in, params, significance, s);
   if (!st.ok)
   {
-    std::cerr << "flowseg_signature: " << (st.message.find (input) == std::string::npos ? input + ": " : "") << st.message << "\n";
+    std::cerr << "flowseg_signature: " << st.message << "\n";
     return 1;
   }
   if (json)

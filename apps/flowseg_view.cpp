@@ -4,6 +4,8 @@
  * --screenshot FILE.png renders off-screen (works under xvfb-run) and exits.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "app_common.h"
+
 #include <pcl_flowseg/flow_segmentation.h>
 #include <pcl_flowseg/result_writer.h>
 #include <pcl_flowseg/shape_input.h>
@@ -49,18 +51,9 @@ Exit status: 0 success, 1 unreadable or unsegmentable input, 2 bad options.
 }
 
 int
-usageError (const std::string& m)
+usageError (const std::string& message)
 {
-  std::cerr << "flowseg_view: " << m << "\n(see flowseg_view --help)\n";
-  return 2;
-}
-
-bool
-number (const std::string& t, double& v)
-{
-  char* end = nullptr;
-  v = std::strtod (t.c_str (), &end);
-  return !t.empty () && *end == '\0' && std::isfinite (v);
+  return flowseg_app::usageError ("flowseg_view", message);
 }
 
 } // namespace
@@ -86,7 +79,7 @@ main (int argc, char** argv)
       printHelp ();
       return 0;
     }
-    else if ((a == "-r" || a == "--rho") && more && number (argv[i + 1], v) && v > 0)
+    else if ((a == "-r" || a == "--rho") && more && flowseg_app::parseNumber (argv[i + 1], v) && v > 0)
       rho = v, ++i;
     else if ((a == "-f" || a == "--features") && more)
     {
@@ -96,13 +89,13 @@ main (int argc, char** argv)
       else if (s == "both") side = pcl_flowseg::FeatureSide::Both;
       else return usageError ("--features must be interior, exterior or both");
     }
-    else if (a == "--significance" && more && number (argv[i + 1], v) && v >= 0 && v < 1)
+    else if (a == "--significance" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 0 && v < 1)
       significance = v, ++i;
     else if (a == "--surface")
       surface = true;
-    else if (a == "--mesh-points" && more && number (argv[i + 1], v) && v >= 4 && v <= 1e8)
+    else if (a == "--mesh-points" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 4 && v <= 1e8)
       in.mesh_points = static_cast<std::size_t> (v), ++i;
-    else if (a == "--point-size" && more && number (argv[i + 1], v) && v >= 1 && v <= 50)
+    else if (a == "--point-size" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 1 && v <= 50)
       point_size = v, ++i;
     else if (a == "--size" && more && std::sscanf (argv[i + 1], "%dx%d", &width, &height) == 2 && width >= 64 &&
              height >= 64 && width <= 8192 && height <= 8192)

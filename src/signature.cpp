@@ -50,6 +50,22 @@ signatureFromSegmentation (const FlowResult& result, double significance, Signat
   return Status::success ();
 }
 
+Status
+signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
+                      double significance, Signature& signature)
+{
+  std::vector<Eigen::Vector3d> points;
+  FlowResult result;
+  Status s = loadShapeSample (path, input, points);
+  if (s.ok)
+    s = runFlowSegmentation (points, params, result);
+  if (s.ok)
+    s = signatureFromSegmentation (result, significance, signature);
+  if (!s.ok && s.message.find (path) == std::string::npos)
+    s.message = path + ": " + s.message;
+  return s;
+}
+
 Eigen::VectorXf
 signatureSummary (const Signature& signature)
 {

@@ -4,7 +4,9 @@
  */
 #pragma once
 
+#include <pcl_flowseg/flow_core.h>
 #include <pcl_flowseg/flow_result.h>
+#include <pcl_flowseg/shape_input.h>
 #include <pcl_flowseg/status.h>
 
 #include <Eigen/Core>
@@ -44,6 +46,12 @@ struct Signature
   * separation was not computed or found no interior. */
 Status
 signatureFromSegmentation (const FlowResult& result, double significance, Signature& signature);
+
+/** \brief The signature of a shape file (anything loadShapeSample reads): sample, segment with
+  * \a params, keep the features above \a significance. The message names the file on failure. */
+Status
+signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
+                      double significance, Signature& signature);
 
 /** \brief A rotation-invariant summary of a signature (weights and distances of the heaviest points
   * to their weighted centre), used to pick candidates in large databases. */
