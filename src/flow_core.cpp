@@ -12,8 +12,6 @@
 #include "core/segment_graph.h"
 #include "core/stable_manifolds.h"
 
-#include <Eigen/LU>
-
 #include <chrono>
 #include <cstdio>
 #include <fstream>

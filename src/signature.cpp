@@ -66,21 +66,4 @@ signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, c
   return s;
 }
 
-Eigen::VectorXf
-signatureSummary (const Signature& signature)
-{
-  // The four heaviest weights and their distances to the signature's weighted centre.
-  constexpr int kSlots = 4;
-  Eigen::VectorXf v = Eigen::VectorXf::Zero (2 * kSlots);
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero ();
-  for (const auto& p : signature.points)
-    centre += p.weight * p.position;
-  for (int k = 0; k < kSlots && k < static_cast<int> (signature.points.size ()); ++k)
-  {
-    v[2 * k] = static_cast<float> (signature.points[static_cast<std::size_t> (k)].weight);
-    v[2 * k + 1] = static_cast<float> ((signature.points[static_cast<std::size_t> (k)].position - centre).norm ());
-  }
-  return v;
-}
-
 } // namespace pcl_flowseg

@@ -53,9 +53,4 @@ Status
 signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
                       double significance, Signature& signature);
 
-/** \brief A rotation-invariant summary of a signature (weights and distances of the heaviest points
-  * to their weighted centre), used to pick candidates in large databases. */
-Eigen::VectorXf
-signatureSummary (const Signature& signature);
-
 } // namespace pcl_flowseg
