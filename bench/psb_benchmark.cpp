@@ -1,0 +1,643 @@
+/*
+ * flowseg_bench_psb: segmentation quality against the Princeton Segmentation Benchmark (PSB).
+ *
+ * For every model of DIR/labels.csv: sample the mesh, segment the sample (interior features) at
+ * each rho, give every face the label of the samples near it, and score the faces with the PSB's
+ * Rand-index error against each human segmentation of the model (averaged). In the same run: one
+ * segment for the whole model, every human against the other humans of the model, and CGAL's
+ * shape-diameter-function segmentation of the mesh itself. Then the project's generated shapes
+ * with known parts, scored on their points. Prints one line per model and a table per category.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "atomic_file.h"
+#include "sdf_peer.h"
+
+#include <pcl_flowseg/flow_core.h>
+#include <pcl_flowseg/mesh_sampling.h>
+#include <pcl_flowseg/segmentation_evaluation.h>
+#include <pcl_flowseg/shape_generator.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using pcl_flowseg::Status;
+constexpr double kMissing = std::numeric_limits<double>::quiet_NaN ();
+constexpr std::size_t kGeneratedPoints = 4000;
+
+struct Options
+{
+  std::string data = "../shared/data/psb_dev";
+  std::size_t points = 10000;
+  std::vector<double> rhos = {1.1, 1.2, 1.3, 1.5};
+  std::uint32_t seed = 1;
+  std::set<std::string> models; // empty: all
+  bool sdf = true;
+  std::string csv;
+};
+
+const char* const kUsage =
+  "usage: flowseg_bench_psb [--data DIR (../shared/data/psb_dev)] [--points N (10000)]\n"
+  "                         [--rho LIST (1.1,1.2,1.3,1.5)] [--seed S (1)] [--models ID,ID]\n"
+  "                         [--no-sdf] [--csv FILE]\n";
+
+std::vector<std::string>
+splitList (const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream in (text);
+  for (std::string item; std::getline (in, item, ',');)
+    if (!item.empty ())
+      items.push_back (item);
+  return items;
+}
+
+bool
+parseOptions (int argc, char** argv, Options& o, std::string& error)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (a == "--no-sdf")
+      o.sdf = false;
+    else if (a == "--data" && has_value)
+      o.data = argv[++i];
+    else if (a == "--csv" && has_value)
+      o.csv = argv[++i];
+    else if (a == "--points" && has_value)
+    {
+      const long n = std::strtol (argv[++i], nullptr, 10);
+      if (n < 4)
+        return error = "--points needs a number >= 4", false;
+      o.points = static_cast<std::size_t> (n);
+    }
+    else if (a == "--seed" && has_value)
+      o.seed = static_cast<std::uint32_t> (std::strtoul (argv[++i], nullptr, 10));
+    else if (a == "--models" && has_value)
+    {
+      const auto ids = splitList (argv[++i]);
+      o.models = std::set<std::string> (ids.begin (), ids.end ());
+    }
+    else if (a == "--rho" && has_value)
+    {
+      o.rhos.clear ();
+      for (const auto& item : splitList (argv[++i]))
+      {
+        char* end = nullptr;
+        const double rho = std::strtod (item.c_str (), &end);
+        if (*end || !std::isfinite (rho) || rho <= 0)
+          return error = "--rho: not a number > 0: " + item, false;
+        o.rhos.push_back (rho);
+      }
+      if (o.rhos.empty ())
+        return error = "--rho needs at least one value", false;
+    }
+    else
+      return error = "unknown or incomplete option " + a, false;
+  }
+  return true;
+}
+
+struct Model
+{
+  std::string file, id, category;
+};
+
+Status
+readModelList (const std::string& path, std::vector<Model>& models)
+{
+  std::ifstream in (path);
+  if (!in)
+    return Status::error ("cannot open " + path);
+  std::string line;
+  std::getline (in, line); // header: file,model_id,category,num_human_segs
+  for (std::size_t number = 2; std::getline (in, line); ++number)
+  {
+    if (!line.empty () && line.back () == '\r')
+      line.pop_back ();
+    if (line.empty ())
+      continue;
+    const auto fields = splitList (line);
+    if (fields.size () < 3)
+      return Status::error (path + ":" + std::to_string (number) + ": expected file,model_id,category,...");
+    models.push_back (Model{fields[0], fields[1], fields[2]});
+  }
+  return Status::success ();
+}
+
+/** A segmentation's error against references: area-weighted (as reported) and with every face
+  * weighing 1 (as the PSB's own segEval computes it), each averaged over the references. */
+struct Score
+{
+  double area = kMissing;
+  double faces = kMissing;
+};
+
+Score
+meanError (const std::vector<double>& areas, const std::vector<int>& labels, const std::vector<std::vector<int>>& references)
+{
+  const std::vector<double> ones (areas.size (), 1.0);
+  Score s{0.0, 0.0};
+  for (const auto& ref : references)
+  {
+    s.area += pcl_flowseg::randIndexError (areas, labels, ref) / references.size ();
+    s.faces += pcl_flowseg::randIndexError (ones, labels, ref) / references.size ();
+  }
+  return s;
+}
+
+/** Every human segmentation against every other one of the same model (unordered pairs). */
+Score
+humanAgreement (const std::vector<double>& areas, const std::vector<std::vector<int>>& humans)
+{
+  Score s{0.0, 0.0};
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < humans.size (); ++i)
+    for (std::size_t j = i + 1; j < humans.size (); ++j, ++pairs)
+    {
+      const Score one = meanError (areas, humans[i], {humans[j]});
+      s.area += one.area;
+      s.faces += one.faces;
+    }
+  if (pairs == 0)
+    return Score{};
+  return Score{s.area / pairs, s.faces / pairs};
+}
+
+std::size_t
+distinctLabels (const std::vector<int>& labels)
+{
+  return std::set<int> (labels.begin (), labels.end ()).size ();
+}
+
+double
+secondsSince (std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+}
+
+/** One method on one model. */
+struct MethodResult
+{
+  Score score;
+  double segments = kMissing; ///< distinct labels of the scored elements (faces or points)
+  double features = kMissing; ///< flowseg: reported features (FlowResult::features)
+  double seconds = 0.0;
+  std::string error;
+};
+
+struct ModelResult
+{
+  Model model;
+  std::size_t faces = 0, humans = 0;
+  std::vector<MethodResult> flow; // one per rho
+  MethodResult sdf;
+  Score one_segment, human;
+  double transfer_seconds = 0.0;
+  std::string error; // the model could not be evaluated at all
+};
+
+Status
+readHumanSegmentations (const fs::path& dir, std::size_t faces, std::vector<std::vector<int>>& humans)
+{
+  std::error_code ec;
+  std::vector<fs::path> files;
+  for (fs::directory_iterator it (dir, ec), end; !ec && it != end; it.increment (ec))
+    if (it->path ().extension () == ".seg")
+      files.push_back (it->path ());
+  if (ec)
+    return Status::error ("cannot list " + dir.string () + ": " + ec.message ());
+  std::sort (files.begin (), files.end ());
+  for (const auto& file : files)
+  {
+    std::vector<int> labels;
+    const Status st = pcl_flowseg::readFaceSegmentation (file.string (), faces, labels);
+    if (!st)
+      return st;
+    humans.push_back (std::move (labels));
+  }
+  if (humans.empty ())
+    return Status::error ("no .seg file in " + dir.string ());
+  return Status::success ();
+}
+
+/** Segments \a points at \a rho (default parameters otherwise) into \a result, timed. */
+MethodResult
+runFlow (const std::vector<Eigen::Vector3d>& points, double rho, pcl_flowseg::FlowResult& result)
+{
+  MethodResult m;
+  pcl_flowseg::FlowParameters params;
+  params.rho = rho;
+  const auto start = std::chrono::steady_clock::now ();
+  const Status st = pcl_flowseg::runFlowSegmentation (points, params, result);
+  m.seconds = secondsSince (start);
+  if (!st)
+    m.error = st.message;
+  else
+    m.features = static_cast<double> (result.features.size ());
+  return m;
+}
+
+ModelResult
+evaluateModel (const Model& model, const Options& o)
+{
+  ModelResult r;
+  r.model = model;
+  pcl_flowseg::TriangleMesh mesh;
+  Status st = pcl_flowseg::loadTriangleMesh ((fs::path (o.data) / model.file).string (), mesh);
+  std::vector<std::vector<int>> humans;
+  if (st)
+    st = readHumanSegmentations (fs::path (o.data) / "seg_human" / model.id, mesh.faces.size (), humans);
+  if (!st)
+  {
+    r.error = st.message;
+    return r;
+  }
+  r.faces = mesh.faces.size ();
+  r.humans = humans.size ();
+  const auto areas = pcl_flowseg::faceAreas (mesh);
+  r.human = humanAgreement (areas, humans);
+  r.one_segment = meanError (areas, std::vector<int> (r.faces, 0), humans);
+
+  const auto points = pcl_flowseg::sampleMeshSurface (mesh, o.points, 0.0, o.seed);
+  for (double rho : o.rhos)
+  {
+    std::fprintf (stderr, "  model %s: flowseg rho %g\n", model.id.c_str (), rho);
+    pcl_flowseg::FlowResult result;
+    MethodResult m = runFlow (points, rho, result);
+    if (m.error.empty ())
+    {
+      const auto start = std::chrono::steady_clock::now ();
+      const auto labels = pcl_flowseg::transferPointLabelsToFaces (mesh, points, result.point_labels);
+      r.transfer_seconds += secondsSince (start);
+      m.score = meanError (areas, labels, humans);
+      m.segments = static_cast<double> (distinctLabels (labels));
+    }
+    r.flow.push_back (m);
+  }
+  if (o.sdf)
+  {
+    std::fprintf (stderr, "  model %s: CGAL SDF\n", model.id.c_str ());
+    std::vector<int> labels;
+    std::size_t segments = 0;
+    const auto start = std::chrono::steady_clock::now ();
+    st = flowseg_bench::sdfSegmentation (mesh, labels, segments);
+    r.sdf.seconds = secondsSince (start);
+    if (!st)
+      r.sdf.error = st.message;
+    else
+    {
+      r.sdf.score = meanError (areas, labels, humans);
+      r.sdf.segments = static_cast<double> (distinctLabels (labels));
+    }
+  }
+  return r;
+}
+
+/** The project's generated shape: flowseg's point labels against the parts (unweighted). */
+struct GeneratedResult
+{
+  std::string name;
+  std::vector<MethodResult> flow;
+  Score one_segment;
+};
+
+GeneratedResult
+evaluateGenerated (const pcl_flowseg::BlobShape& shape, const Options& o)
+{
+  GeneratedResult g;
+  g.name = shape.name;
+  const auto points = pcl_flowseg::sampleBoundary (shape, kGeneratedPoints, o.seed);
+  std::vector<int> truth;
+  for (const auto& p : points)
+    truth.push_back (shape.nearestPart (p));
+  const std::vector<double> ones (points.size (), 1.0);
+  const double one = pcl_flowseg::randIndexError (ones, std::vector<int> (points.size (), 0), truth);
+  g.one_segment = Score{one, one};
+  for (double rho : o.rhos)
+  {
+    pcl_flowseg::FlowResult result;
+    MethodResult m = runFlow (points, rho, result);
+    if (m.error.empty ())
+    {
+      std::vector<int> labels;
+      for (std::uint32_t l : result.point_labels)
+        labels.push_back (l == pcl_flowseg::kNoSegment ? -1 : static_cast<int> (l));
+      const double e = pcl_flowseg::randIndexError (ones, labels, truth);
+      m.score = Score{e, e};
+      m.segments = static_cast<double> (distinctLabels (labels));
+    }
+    g.flow.push_back (m);
+  }
+  return g;
+}
+
+std::string
+number (double v, const char* format = "%.3f")
+{
+  if (!std::isfinite (v))
+    return "-";
+  char text[32];
+  std::snprintf (text, sizeof (text), format, v);
+  return text;
+}
+
+void
+printModelLine (const ModelResult& r, const Options& o)
+{
+  if (!r.error.empty ())
+  {
+    std::printf ("%-5s %-9s FAILED: %s\n", r.model.id.c_str (), r.model.category.c_str (), r.error.c_str ());
+    return;
+  }
+  std::printf ("%-5s %-9s faces %6zu humans %2zu |", r.model.id.c_str (), r.model.category.c_str (), r.faces, r.humans);
+  for (std::size_t k = 0; k < o.rhos.size (); ++k)
+  {
+    const auto& m = r.flow[k];
+    if (!m.error.empty ())
+      std::printf (" rho %g FAILED (%s) |", o.rhos[k], m.error.c_str ());
+    else
+      std::printf (" rho %g %s (%s seg, %s feat) |", o.rhos[k], number (m.score.area).c_str (), number (m.segments, "%.0f").c_str (),
+                   number (m.features, "%.0f").c_str ());
+  }
+  if (o.sdf)
+    std::printf (" sdf %s (%s seg) |", r.sdf.error.empty () ? number (r.sdf.score.area).c_str () : ("FAILED: " + r.sdf.error).c_str (),
+                 number (r.sdf.segments, "%.0f").c_str ());
+  std::printf (" one %s | human %s\n", number (r.one_segment.area).c_str (), number (r.human.area).c_str ());
+  for (std::size_t k = 0; k < o.rhos.size (); ++k)
+    if (r.flow[k].error.empty () && r.flow[k].features == 0)
+      std::printf ("      note: flowseg reported no feature at rho %g (every face unlabelled: one segment)\n", o.rhos[k]);
+  std::fflush (stdout);
+}
+
+/** Mean of the finite values; \a missing counts the others. */
+struct Mean
+{
+  double sum = 0.0;
+  int count = 0, missing = 0;
+  void add (double v)
+  {
+    if (std::isfinite (v))
+    {
+      sum += v;
+      ++count;
+    }
+    else
+      ++missing;
+  }
+  std::string text (const char* format = "%.3f") const
+  {
+    if (count == 0)
+      return "-";
+    return number (sum / count, format) + (missing ? "*" : "");
+  }
+};
+
+/** One table row: the columns of the table for a set of models. */
+struct Row
+{
+  std::string name;
+  int models = 0;
+  std::vector<Mean> flow, flow_segments;
+  Mean sdf, sdf_segments, one_segment, human;
+};
+
+Row
+summarise (const std::string& name, const std::vector<const ModelResult*>& results, std::size_t rhos, bool by_area)
+{
+  Row row;
+  row.name = name;
+  row.flow.resize (rhos);
+  row.flow_segments.resize (rhos);
+  for (const ModelResult* r : results)
+  {
+    ++row.models;
+    for (std::size_t k = 0; k < rhos; ++k)
+    {
+      row.flow[k].add (by_area ? r->flow[k].score.area : r->flow[k].score.faces);
+      row.flow_segments[k].add (r->flow[k].segments);
+    }
+    row.sdf.add (by_area ? r->sdf.score.area : r->sdf.score.faces);
+    row.sdf_segments.add (r->sdf.segments);
+    row.one_segment.add (by_area ? r->one_segment.area : r->one_segment.faces);
+    row.human.add (by_area ? r->human.area : r->human.faces);
+  }
+  return row;
+}
+
+void
+printTable (const std::vector<Row>& rows, const Options& o)
+{
+  std::printf ("\n| category | models |");
+  for (double rho : o.rhos)
+    std::printf (" flowseg rho %g |", rho);
+  std::printf (" CGAL SDF | one segment | human vs human |");
+  for (double rho : o.rhos)
+    std::printf (" segs rho %g |", rho);
+  std::printf (" segs SDF |\n|---|---|");
+  for (std::size_t k = 0; k < 2 * o.rhos.size () + 4; ++k)
+    std::printf ("---|");
+  std::printf ("\n");
+  for (const Row& row : rows)
+  {
+    std::printf ("| %s | %d |", row.name.c_str (), row.models);
+    for (const auto& m : row.flow)
+      std::printf (" %s |", m.text ().c_str ());
+    std::printf (" %s | %s | %s |", row.sdf.text ().c_str (), row.one_segment.text ().c_str (), row.human.text ().c_str ());
+    for (const auto& m : row.flow_segments)
+      std::printf (" %s |", m.text ("%.1f").c_str ());
+    std::printf (" %s |\n", row.sdf_segments.text ("%.1f").c_str ());
+  }
+}
+
+Row
+generatedRow (const GeneratedResult& g, std::size_t rhos)
+{
+  Row row;
+  row.name = "generated " + g.name + " (points)";
+  row.models = 1;
+  row.flow.resize (rhos);
+  row.flow_segments.resize (rhos);
+  for (std::size_t k = 0; k < rhos; ++k)
+  {
+    row.flow[k].add (g.flow[k].score.area);
+    row.flow_segments[k].add (g.flow[k].segments);
+  }
+  row.one_segment.add (g.one_segment.area);
+  return row;
+}
+
+Status
+writeCsv (const std::string& path, const std::vector<ModelResult>& results, const std::vector<GeneratedResult>& generated,
+          const Options& o)
+{
+  return pcl_flowseg::writeFileAtomically (path, [&] (const std::string& tmp) {
+    std::ofstream out (tmp);
+    out << "model_id,category,faces,humans";
+    for (double rho : o.rhos)
+      out << ",flow_" << rho << ",flow_" << rho << "_unweighted,flow_" << rho << "_segments,flow_" << rho << "_features,flow_"
+          << rho << "_seconds";
+    out << ",sdf,sdf_unweighted,sdf_segments,sdf_seconds,one_segment,one_segment_unweighted,human,human_unweighted,error\n";
+    auto csvNumber = [] (double v) { return std::isfinite (v) ? number (v, "%.6g") : std::string (); };
+    for (const auto& r : results)
+    {
+      out << r.model.id << ',' << r.model.category << ',' << r.faces << ',' << r.humans;
+      std::string error = r.error;
+      for (std::size_t k = 0; k < o.rhos.size (); ++k)
+      {
+        const MethodResult m = k < r.flow.size () ? r.flow[k] : MethodResult{};
+        out << ',' << csvNumber (m.score.area) << ',' << csvNumber (m.score.faces) << ',' << csvNumber (m.segments) << ','
+            << csvNumber (m.features) << ',' << csvNumber (m.seconds);
+        if (!m.error.empty ())
+          error += " flowseg rho " + number (o.rhos[k], "%g") + ": " + m.error;
+      }
+      if (!r.sdf.error.empty ())
+        error += " sdf: " + r.sdf.error;
+      std::replace (error.begin (), error.end (), ',', ';');
+      out << ',' << csvNumber (r.sdf.score.area) << ',' << csvNumber (r.sdf.score.faces) << ',' << csvNumber (r.sdf.segments) << ','
+          << csvNumber (r.sdf.seconds) << ',' << csvNumber (r.one_segment.area) << ',' << csvNumber (r.one_segment.faces) << ','
+          << csvNumber (r.human.area) << ',' << csvNumber (r.human.faces) << ',' << error << '\n';
+    }
+    for (const auto& g : generated)
+    {
+      out << g.name << ",generated," << 0 << ',' << 0;
+      for (const auto& m : g.flow)
+        out << ',' << csvNumber (m.score.area) << ',' << csvNumber (m.score.faces) << ',' << csvNumber (m.segments) << ','
+            << csvNumber (m.features) << ',' << csvNumber (m.seconds);
+      out << ",,,,," << csvNumber (g.one_segment.area) << ',' << csvNumber (g.one_segment.faces) << ",,,\n";
+    }
+    out.flush ();
+    return out ? Status::success () : Status::error ("write error");
+  });
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  Options o;
+  std::string error;
+  if (argc > 1 && (std::string (argv[1]) == "-h" || std::string (argv[1]) == "--help"))
+  {
+    std::fputs (kUsage, stdout);
+    return 0;
+  }
+  if (!parseOptions (argc, argv, o, error))
+  {
+    std::fprintf (stderr, "flowseg_bench_psb: %s\n%s", error.c_str (), kUsage);
+    return 2;
+  }
+  const fs::path list = fs::path (o.data) / "labels.csv";
+  if (!fs::is_directory (o.data) || !fs::is_regular_file (list))
+  {
+    std::fprintf (stderr, "flowseg_bench_psb: no PSB data: %s is missing (give the data directory with --data DIR)\n",
+                  list.string ().c_str ());
+    return 1;
+  }
+  std::vector<Model> models;
+  if (const Status st = readModelList (list.string (), models); !st)
+  {
+    std::fprintf (stderr, "flowseg_bench_psb: %s\n", st.message.c_str ());
+    return 1;
+  }
+  if (!o.models.empty ())
+    models.erase (std::remove_if (models.begin (), models.end (), [&] (const Model& m) { return !o.models.count (m.id); }),
+                  models.end ());
+
+  const auto start = std::chrono::steady_clock::now ();
+  std::printf ("PSB: %zu models from %s, %zu points per model, seed %u, rho", models.size (), o.data.c_str (), o.points, o.seed);
+  for (double rho : o.rhos)
+    std::printf (" %g", rho);
+  std::printf ("; errors: area-weighted Rand-index error, mean over the model's human segmentations\n\n");
+  std::vector<ModelResult> results;
+  for (std::size_t i = 0; i < models.size (); ++i)
+  {
+    std::fprintf (stderr, "[%zu/%zu] model %s (%s)\n", i + 1, models.size (), models[i].id.c_str (), models[i].category.c_str ());
+    results.push_back (evaluateModel (models[i], o));
+    printModelLine (results.back (), o);
+  }
+
+  std::vector<GeneratedResult> generated;
+  for (const auto& shape : pcl_flowseg::sampleShapes ())
+    if (shape.dimension == 3)
+    {
+      std::fprintf (stderr, "generated shape %s\n", shape.name.c_str ());
+      generated.push_back (evaluateGenerated (shape, o));
+    }
+
+  // Table: categories in the order of the list, then all models, then the generated shapes.
+  std::vector<std::string> categories;
+  std::vector<const ModelResult*> evaluated;
+  for (const auto& r : results)
+    if (r.error.empty ())
+    {
+      evaluated.push_back (&r);
+      if (std::find (categories.begin (), categories.end (), r.model.category) == categories.end ())
+        categories.push_back (r.model.category);
+    }
+  std::vector<Row> rows;
+  for (const auto& category : categories)
+  {
+    std::vector<const ModelResult*> in;
+    for (const ModelResult* r : evaluated)
+      if (r->model.category == category)
+        in.push_back (r);
+    rows.push_back (summarise (category, in, o.rhos.size (), true));
+  }
+  rows.push_back (summarise ("**all**", evaluated, o.rhos.size (), true));
+  rows.push_back (summarise ("all, every face weighing 1 (PSB segEval)", evaluated, o.rhos.size (), false));
+  for (const auto& g : generated)
+    rows.push_back (generatedRow (g, o.rhos.size ()));
+  printTable (rows, o);
+  std::printf ("\nErrors: 1 - Rand index, faces weighted by area (pairs i < j, weight area_i * area_j), mean over the\n"
+               "model's human segmentations, then over the models. Generated shapes: %zu points, every point weighing 1,\n"
+               "against their parts. segs: distinct face (point) labels. *: some models missing (failed) in that cell.\n",
+               kGeneratedPoints);
+
+  double flow_seconds = 0.0, sdf_seconds = 0.0, transfer_seconds = 0.0;
+  for (const auto& r : results)
+  {
+    for (const auto& m : r.flow)
+      flow_seconds += m.seconds;
+    sdf_seconds += r.sdf.seconds;
+    transfer_seconds += r.transfer_seconds;
+  }
+  std::printf ("\nTime: flowseg %.1f s (%zu runs of %zu points), label transfer %.1f s, CGAL SDF %.1f s, whole run %.1f s\n",
+               flow_seconds, evaluated.size () * o.rhos.size (), o.points, transfer_seconds, sdf_seconds, secondsSince (start));
+
+  int failures = 0;
+  for (const auto& r : results)
+  {
+    if (!r.error.empty ())
+      ++failures, std::printf ("failed: model %s: %s\n", r.model.id.c_str (), r.error.c_str ());
+    for (std::size_t k = 0; k < r.flow.size (); ++k)
+      if (!r.flow[k].error.empty ())
+        std::printf ("failed: model %s: flowseg rho %g: %s\n", r.model.id.c_str (), o.rhos[k], r.flow[k].error.c_str ());
+    if (!r.sdf.error.empty ())
+      std::printf ("failed: model %s: SDF: %s\n", r.model.id.c_str (), r.sdf.error.c_str ());
+  }
+  if (!o.csv.empty ())
+  {
+    if (const Status st = writeCsv (o.csv, results, generated, o); !st)
+    {
+      std::fprintf (stderr, "flowseg_bench_psb: %s\n", st.message.c_str ());
+      return 1;
+    }
+    std::printf ("per-model rows: %s\n", o.csv.c_str ());
+  }
+  return failures ? 1 : 0;
+}
