@@ -47,6 +47,8 @@ Options:
   -o, --output PREFIX    output prefix (default: INPUT without its extension)
       --binary           write the label PCD in binary (default ASCII)
       --no-surface       do not write PREFIX.surface.ply
+  -j, --threads N        worker threads (default 0 = all cores; 1 = sequential); the result is
+                         the same for every N
   -q, --quiet            no progress or summary on stderr
   -h, --help             this help
 
@@ -86,6 +88,7 @@ main (int argc, char** argv)
   pcl_flowseg::Denoising denoise = pcl_flowseg::Denoising::Automatic;
   bool has_viewpoint = false;
   double significance = pcl_flowseg::kDefaultSignificance;
+  unsigned threads = 0;
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero ();
 
   for (int i = 1; i < argc; ++i)
@@ -167,6 +170,13 @@ main (int argc, char** argv)
       binary = true;
     else if (arg == "-q" || arg == "--quiet")
       quiet = true;
+    else if (arg == "-j" || arg == "--threads")
+    {
+      double t = 0;
+      if (!value (v) || !flowseg_app::parseNumber (v, t) || t < 0 || t > 1024 || t != static_cast<int> (t))
+        return usageError ("--threads needs a whole number from 0 to 1024, got '" + v + "'");
+      threads = static_cast<unsigned> (t);
+    }
     else if (!arg.empty () && arg[0] == '-' && arg != "-")
       return usageError ("unknown option '" + arg + "'");
     else if (input.empty ())
@@ -227,6 +237,7 @@ main (int argc, char** argv)
   seg.setSeparateInterior (separate);
   seg.setFeatureSide (side);
   seg.setDenoising (denoise);
+  seg.setNumberOfThreads (threads);
   seg.setUseNormals (use_normals);
   seg.setUseSensorOrigin (has_viewpoint || use_sensor_origin);
   if (!quiet)
@@ -288,8 +299,8 @@ main (int argc, char** argv)
                     result.interior.inside_volume, result.interior.inside_cells, result.interior.boundary_facets,
                     result.interior.closed ? "closed" : "NOT closed", result.interior.manifold ? "manifold" : "not manifold",
                     result.interior.vertices_off_boundary, result.interior.smoothing_passes);
-    std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, delaunay %.1f, flow %.1f, interior %.1f, merge %.1f, labels %.1f, total %.1f\n",
-                  read_ms, t.preparation_ms, t.delaunay_ms, t.flow_ms, t.interior_ms, t.merge_ms, t.labels_ms, t.total_ms);
+    std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, delaunay %.1f, flow %.1f, manifolds %.1f, interior %.1f, merge %.1f, labels %.1f, total %.1f\n",
+                  read_ms, t.preparation_ms, t.delaunay_ms, t.flow_ms, t.manifolds_ms, t.interior_ms, t.merge_ms, t.labels_ms, t.total_ms);
     std::fprintf (stderr, "wrote %s.labels.pcd, %s.json, %s.ply%s%s\n", prefix.c_str (), prefix.c_str (), prefix.c_str (),
                   surface && separate ? (", " + prefix + ".surface.ply").c_str () : "",
                   result.dimension == 2 ? (", " + prefix + ".svg").c_str () : "");

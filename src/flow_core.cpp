@@ -7,6 +7,7 @@
 #include "core/cell_geometry.h"
 #include "core/delaunay_cells.h"
 #include "core/interior_labelling.h"
+#include "core/parallel.h"
 #include "core/point_preparation.h"
 #include "core/point_labels.h"
 #include "core/segment_graph.h"
@@ -144,6 +145,7 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
 
   try
   {
+    const core::WorkerThreads workers (params.threads);
     const auto start = Clock::now ();
     report ("preparation", 0.0);
     core::PreparedPoints prepared;
@@ -163,17 +165,25 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
                                           : core::triangulate3D (result.vertices, result.cells, error);
     if (!ok)
       return failure (result, error);
+    result.timings.delaunay_ms = millisecondsSince (stage);
+
+    report ("flow", 0.5);
+    stage = Clock::now ();
+    if (result.dimension == 2)
+      core::computeFlowRelation2D (prepared.planar, result.cells);
+    else
+      core::computeFlowRelation3D (result.vertices, result.cells);
     const int facets = result.dimension + 1;
-    for (FlowCell& cell : result.cells)
-    {
+    core::parallelFor (result.cells.size (), [&] (std::size_t k) {
+      FlowCell& cell = result.cells[k];
       Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
       for (int i = 0; i < facets; ++i)
         sum += result.vertices[static_cast<std::size_t> (cell.vertices[i])];
       cell.centroid = sum / facets;
-    }
-    result.timings.delaunay_ms = millisecondsSince (stage);
+    });
+    result.timings.flow_ms = millisecondsSince (stage);
 
-    report ("flow", 0.6);
+    report ("manifolds", 0.6);
     stage = Clock::now ();
     const core::StableManifolds sm = core::computeStableManifolds (result.cells, result.dimension);
     result.cycle_breaks = sm.cycle_breaks;
@@ -181,7 +191,7 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
       result.warnings.push_back (std::to_string (sm.cycle_breaks) +
                                  " cell(s) not ordered by the flow (degenerate input): resolved by height");
     buildManifolds (sm, result);
-    result.timings.flow_ms = millisecondsSince (stage);
+    result.timings.manifolds_ms = millisecondsSince (stage);
 
     if (params.separate_interior)
     {

@@ -187,6 +187,7 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
     const StageTimings& t = r.timings;
     out << "  \"timings_ms\": {\"read\": " << num (info.read_ms) << ", \"preparation\": " << num (t.preparation_ms)
         << ", \"delaunay\": " << num (t.delaunay_ms) << ", \"flow\": " << num (t.flow_ms)
+        << ", \"manifolds\": " << num (t.manifolds_ms)
         << ", \"interior\": " << num (t.interior_ms) << ", \"merge\": " << num (t.merge_ms)
         << ", \"labels\": " << num (t.labels_ms) << ", \"total\": " << num (t.total_ms) << "},\n";
     out << "  \"warnings\": [";

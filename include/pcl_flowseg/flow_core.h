@@ -62,6 +62,10 @@ struct FlowParameters
   /** Relative flatness below which Automatic chooses 2D: the spread of the points normal to
     * their best-fit plane divided by the bounding-box diagonal. Default 1e-9. */
   double planar_tolerance = 1e-9;
+  /** Worker threads for the triangulation (CGAL with TBB) and the per-cell stages (OpenMP);
+    * 0 (default) = all hardware threads, 1 = sequential. The result does not depend on it: cells
+    * are put in a canonical order after the triangulation. */
+  unsigned threads = 0;
 };
 
 /** \brief Progress report: a stage name and the fraction of the whole run done (0..1). */

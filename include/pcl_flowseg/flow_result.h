@@ -91,8 +91,9 @@ struct FlowSegment
 struct StageTimings
 {
   double preparation_ms = 0.0; ///< finite filter, duplicates, dimension detection
-  double delaunay_ms = 0.0;    ///< CGAL triangulation and its conversion to cells
-  double flow_ms = 0.0;        ///< flow relation, maxima, stable manifolds
+  double delaunay_ms = 0.0;    ///< CGAL triangulation and its conversion to cells in canonical order
+  double flow_ms = 0.0;        ///< flow relation (exact predicates), circumradii, volumes, centroids
+  double manifolds_ms = 0.0;   ///< strengthened flow, maxima, stable manifolds and their adjacency
   double interior_ms = 0.0;    ///< interior/exterior separation (surface reconstruction)
   double merge_ms = 0.0;       ///< rho-merging and segment statistics
   double labels_ms = 0.0;      ///< per-point labels

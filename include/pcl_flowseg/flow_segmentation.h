@@ -78,6 +78,11 @@ public:
   inline void setPlanarTolerance (double tolerance) { params_.planar_tolerance = tolerance; }
   inline double getPlanarTolerance () const { return params_.planar_tolerance; }
 
+  /** \brief Worker threads for the triangulation and the per-cell stages: 0 (default) = all
+    * hardware threads, 1 = sequential. The result is the same for every value. */
+  inline void setNumberOfThreads (unsigned int threads) { params_.threads = threads; }
+  inline unsigned int getNumberOfThreads () const { return params_.threads; }
+
   /** \brief Separate interior and exterior (default true). False gives the paper's raw
     * segmentation of the whole convex hull, every segment reported. */
   inline void setSeparateInterior (bool separate) { params_.separate_interior = separate; }

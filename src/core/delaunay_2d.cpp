@@ -4,6 +4,9 @@
  */
 #include "delaunay_cells.h"
 
+#include "canonical_cells.h"
+#include "parallel.h"
+
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -25,8 +28,7 @@ using Point2 = Kernel::Point_2;
 } // namespace
 
 bool
-triangulate2D (const std::vector<Eigen::Vector2d>& points,
-               std::vector<FlowCell>& cells, std::string& error)
+triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells, std::string& error)
 {
   cells.clear ();
   if (points.size () < 3)
@@ -51,29 +53,42 @@ triangulate2D (const std::vector<Eigen::Vector2d>& points,
   for (auto f = dt.finite_faces_begin (); f != dt.finite_faces_end (); ++f)
     f->info () = next++;
   cells.resize (static_cast<std::size_t> (next));
-
   for (auto f = dt.finite_faces_begin (); f != dt.finite_faces_end (); ++f)
   {
     FlowCell& cell = cells[static_cast<std::size_t> (f->info ())];
-    const Point2* p[3];
     for (int i = 0; i < 3; ++i)
     {
       cell.vertices[i] = f->vertex (i)->info ();
-      p[i] = &f->vertex (i)->point ();
-      auto nb = f->neighbor (i);
+      const auto nb = f->neighbor (i);
       cell.neighbors[i] = dt.is_infinite (nb) ? kInfiniteCell : nb->info ();
     }
+  }
+  putInCanonicalOrder (cells, 2);
+  return true;
+}
+
+void
+computeFlowRelation2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells)
+{
+  parallelFor (cells.size (), [&] (std::size_t k) {
+    FlowCell& cell = cells[k];
+    Point2 p[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      const Eigen::Vector2d& v = points[static_cast<std::size_t> (cell.vertices[i])];
+      p[i] = Point2 (v.x (), v.y ());
+    }
+    cell.flow_mask = 0;
     for (int i = 0; i < 3; ++i)
     {
       // The triangle and its circumcentre lie on opposite sides of the edge opposite p[i]
       // exactly when the angle at p[i] is obtuse (exact predicate, no circumcentre built).
-      if (CGAL::angle (*p[(i + 1) % 3], *p[i], *p[(i + 2) % 3]) == CGAL::OBTUSE)
+      if (CGAL::angle (p[(i + 1) % 3], p[i], p[(i + 2) % 3]) == CGAL::OBTUSE)
         cell.flow_mask |= static_cast<std::uint8_t> (1u << i);
     }
-    cell.squared_radius = CGAL::squared_radius (*p[0], *p[1], *p[2]);
-    cell.volume = std::abs (CGAL::area (*p[0], *p[1], *p[2]));
-  }
-  return true;
+    cell.squared_radius = CGAL::squared_radius (p[0], p[1], p[2]);
+    cell.volume = std::abs (CGAL::area (p[0], p[1], p[2]));
+  });
 }
 
 } // namespace core

@@ -12,22 +12,29 @@
 namespace pcl_flowseg {
 namespace core {
 
-/** \brief Triangulates 2D points (CGAL, exact predicates) into \a cells.
-  *
-  * Fills vertices, neighbors, flow_mask (exact obtuse-angle test: a triangle flows across the
-  * edge opposite an obtuse angle), squared_radius and volume (area). Centroids are left for the
-  * caller, who knows the input frame. Returns false with \a error when the points do not span
-  * the plane (fewer than 3 or all collinear). Points must be distinct. */
+/** \brief Triangulates 2D points (CGAL, exact predicates) into \a cells: vertices and neighbors
+  * only, in canonical order (putInCanonicalOrder). Returns false with \a error when the points do
+  * not span the plane (fewer than 3 or all collinear). Points must be distinct. */
 bool
-triangulate2D (const std::vector<Eigen::Vector2d>& points,
-               std::vector<FlowCell>& cells, std::string& error);
+triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells, std::string& error);
 
-/** \brief Triangulates 3D points into tetrahedra; the flow test is CGAL's exact
-  * side_of_bounded_sphere on each facet's diametral sphere. Returns false with \a error when
-  * the points do not span space (fewer than 4, collinear or coplanar). Points must be distinct. */
+/** \brief Triangulates 3D points into tetrahedra (vertices and neighbors, canonical order); in
+  * parallel (CGAL with TBB) when workerThreads() > 1 and the input is large enough. Returns false
+  * with \a error when the points do not span space (fewer than 4, collinear or coplanar). Points
+  * must be distinct. */
 bool
-triangulate3D (const std::vector<Eigen::Vector3d>& points,
-               std::vector<FlowCell>& cells, std::string& error);
+triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells, std::string& error);
+
+/** \brief The flow relation of triangles: flow_mask (exact test: a triangle flows across the edge
+  * opposite an obtuse angle), squared_radius and volume (area). Centroids are left for the caller,
+  * who knows the input frame. */
+void
+computeFlowRelation2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells);
+
+/** \brief The flow relation of tetrahedra: flow_mask (CGAL's exact side_of_bounded_sphere on each
+  * facet's diametral sphere), squared_radius and volume. */
+void
+computeFlowRelation3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells);
 
 } // namespace core
 } // namespace pcl_flowseg

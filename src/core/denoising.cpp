@@ -109,7 +109,12 @@ triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, s
                     std::string& error)
 {
   if (dimension == 3)
-    return triangulate3D (points, cells, error);
+  {
+    if (!triangulate3D (points, cells, error))
+      return false;
+    computeFlowRelation3D (points, cells);
+    return true;
+  }
   // Plane coordinates in an orthonormal basis of the points' plane.
   Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
   for (const auto& p : points)
@@ -124,7 +129,10 @@ triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, s
   planar.reserve (points.size ());
   for (const auto& p : points)
     planar.emplace_back ((p - mean).dot (u), (p - mean).dot (v));
-  return triangulate2D (planar, cells, error);
+  if (!triangulate2D (planar, cells, error))
+    return false;
+  computeFlowRelation2D (planar, cells);
+  return true;
 }
 
 } // namespace core

@@ -1,0 +1,59 @@
+/*
+ * pcl_flowseg - internal: the worker threads of one run, and a parallel loop over them.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cstddef>
+#include <memory>
+
+namespace pcl_flowseg {
+namespace core {
+
+/** \brief Limits TBB (CGAL's parallel triangulation and parallelFor) to \a threads workers while
+  * it lives; 0 leaves all hardware threads. The limit is process-wide (TBB's global_control). */
+class WorkerThreads
+{
+public:
+  explicit WorkerThreads (unsigned threads)
+  {
+    if (threads > 0)
+      control_.reset (new tbb::global_control (tbb::global_control::max_allowed_parallelism, threads));
+  }
+
+private:
+  std::unique_ptr<tbb::global_control> control_;
+};
+
+/** \brief Threads TBB may use now. */
+inline std::size_t
+workerThreads ()
+{
+  return tbb::global_control::active_value (tbb::global_control::max_allowed_parallelism);
+}
+
+/** \brief Calls \a body (std::size_t index) for every index in [0, n), in parallel chunks. Each
+  * index must touch only its own data. */
+template <class Body>
+void
+parallelFor (std::size_t n, const Body& body)
+{
+  if (n < 4096 || workerThreads () < 2)
+  {
+    for (std::size_t i = 0; i < n; ++i)
+      body (i);
+    return;
+  }
+  tbb::parallel_for (tbb::blocked_range<std::size_t> (0, n, 2048), [&] (const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin (); i != r.end (); ++i)
+      body (i);
+  });
+}
+
+} // namespace core
+} // namespace pcl_flowseg

@@ -1,0 +1,98 @@
+/*
+ * The fast paths of the core agree with the slow exact ones: the filtered flow predicate with
+ * CGAL's exact predicate, the parallel triangulation with the sequential one.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "core/flow_predicate.h"
+#include "test_support.h"
+
+#include <pcl_flowseg/shape_generator.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace pcl_flowseg;
+using V = Eigen::Vector3d;
+
+namespace {
+bool
+cgalInside (const V& a, const V& b, const V& c, const V& p)
+{
+  using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  return CGAL::side_of_bounded_sphere (P (a.x (), a.y (), a.z ()), P (b.x (), b.y (), b.z ()), P (c.x (), c.y (), c.z ()),
+                                       P (p.x (), p.y (), p.z ())) == CGAL::ON_BOUNDED_SIDE;
+}
+} // namespace
+
+TEST (FlowPredicate, AgreesWithCgalOnRandomAndDegenerateInput)
+{
+  std::mt19937 rng (7);
+  std::uniform_real_distribution<double> unit (-1.0, 1.0);
+  std::uniform_int_distribution<int> grid (-3, 3);
+  int inside = 0, outside = 0;
+  for (int k = 0; k < 20000; ++k)
+  {
+    V a, b, c, p;
+    switch (k % 4)
+    {
+    case 0: // general position, far from the origin
+      a = V (unit (rng), unit (rng), unit (rng)) + V (1e5, -2e5, 3e5);
+      b = a + V (unit (rng), unit (rng), unit (rng));
+      c = a + V (unit (rng), unit (rng), unit (rng));
+      p = a + V (unit (rng), unit (rng), unit (rng));
+      break;
+    case 1: // small integer grid: many points exactly on the sphere, collinear triangles
+      a = V (grid (rng), grid (rng), grid (rng));
+      b = V (grid (rng), grid (rng), grid (rng));
+      c = V (grid (rng), grid (rng), grid (rng));
+      p = V (grid (rng), grid (rng), grid (rng));
+      break;
+    case 2: // p on the diametral sphere up to rounding: the sign is decided by the last bits
+    {
+      a = V (1, 0, 0);
+      b = V (-1, 0, 0);
+      c = V (0, 1, 0);
+      const V dir = V (unit (rng), unit (rng), unit (rng)).normalized ();
+      p = dir * (1.0 + (k % 8 - 4) * 1e-16);
+      break;
+    }
+    default: // needle triangles
+      a = V (unit (rng), unit (rng), unit (rng));
+      b = a + 1e-9 * V (unit (rng), unit (rng), unit (rng));
+      c = a + V (unit (rng), unit (rng), unit (rng));
+      p = a + V (unit (rng), unit (rng), unit (rng));
+    }
+    const bool expected = cgalInside (a, b, c, p);
+    ASSERT_EQ (core::insideDiametralSphere (a, b, c, p), expected) << "case " << k;
+    (expected ? inside : outside)++;
+  }
+  EXPECT_GT (inside, 1000); // both answers are exercised
+  EXPECT_GT (outside, 1000);
+}
+
+TEST (ParallelCore, ThreadCountDoesNotChangeTheResult)
+{
+  const auto shape = sampleShape ("animal3d");
+  const auto points = sampleBoundary (shape, 12000, 3); // above the parallel triangulation's threshold
+  FlowParameters sequential;
+  sequential.threads = 1;
+  FlowParameters parallel = sequential;
+  parallel.threads = 2;
+  FlowResult a, b;
+  ASSERT_TRUE (runFlowSegmentation (points, sequential, a));
+  ASSERT_TRUE (runFlowSegmentation (points, parallel, b));
+  ASSERT_EQ (a.cells.size (), b.cells.size ());
+  for (std::size_t k = 0; k < a.cells.size (); ++k)
+  {
+    ASSERT_EQ (a.cells[k].vertices, b.cells[k].vertices) << k;
+    ASSERT_EQ (a.cells[k].neighbors, b.cells[k].neighbors) << k;
+    ASSERT_EQ (a.cells[k].flow_mask, b.cells[k].flow_mask) << k;
+    ASSERT_EQ (a.cells[k].segment, b.cells[k].segment) << k;
+    ASSERT_EQ (a.cells[k].inside, b.cells[k].inside) << k;
+  }
+  EXPECT_EQ (a.maxima.size (), b.maxima.size ());
+  EXPECT_EQ (a.segments.size (), b.segments.size ());
+  EXPECT_EQ (a.point_labels, b.point_labels);
+}
