@@ -183,20 +183,24 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
     });
     result.timings.flow_ms = millisecondsSince (stage);
 
-    report ("manifolds", 0.6);
-    stage = Clock::now ();
-    const core::StableManifolds sm = core::computeStableManifolds (result.cells, result.dimension);
-    result.cycle_breaks = sm.cycle_breaks;
-    if (sm.cycle_breaks > 0)
-      result.warnings.push_back (std::to_string (sm.cycle_breaks) +
-                                 " cell(s) not ordered by the flow (degenerate input): resolved by height");
-    buildManifolds (sm, result);
-    result.timings.manifolds_ms = millisecondsSince (stage);
-
-    if (params.separate_interior)
-    {
-      report ("interior", 0.7);
-      stage = Clock::now ();
+    // The stable manifolds and the interior/exterior labelling read the same cells and write
+    // different fields of them (manifold and successor, inside): they run side by side.
+    report (params.separate_interior ? "manifolds and interior" : "manifolds", 0.6);
+    std::vector<std::string> manifold_warnings;
+    auto manifolds = [&] () {
+      const auto begin = Clock::now ();
+      const core::StableManifolds sm = core::computeStableManifolds (result.cells, result.dimension);
+      result.cycle_breaks = sm.cycle_breaks;
+      if (sm.cycle_breaks > 0)
+        manifold_warnings.push_back (std::to_string (sm.cycle_breaks) +
+                                     " cell(s) not ordered by the flow (degenerate input): resolved by height");
+      buildManifolds (sm, result);
+      result.timings.manifolds_ms = millisecondsSince (begin);
+    };
+    auto interior = [&] () {
+      if (!params.separate_interior)
+        return;
+      const auto begin = Clock::now ();
       std::vector<Eigen::Vector3d> vertex_normals;
       if (!params.normals.empty ())
       {
@@ -205,7 +209,7 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
           if (result.point_to_vertex[i] >= 0)
             vertex_normals[static_cast<std::size_t> (result.point_to_vertex[i])] = params.normals[i];
       }
-      core::labelInterior (result, params, vertex_normals);
+      core::labelInterior (result, params, vertex_normals); // the only writer of result.warnings here
       if (!result.interior.closed)
         result.warnings.push_back ("the interior/exterior boundary is not closed");
       else if (!result.interior.manifold)
@@ -214,8 +218,12 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
                                    " non-manifold vertex(es)");
       if (result.interior.inside_cells == 0)
         result.warnings.push_back ("no cell was labelled inside: the sample may not enclose a volume (open scan, hole?)");
-      result.timings.interior_ms = millisecondsSince (stage);
-    }
+      result.timings.interior_ms = millisecondsSince (begin);
+    };
+    const std::size_t earlier_warnings = result.warnings.size ();
+    core::runSideBySide (manifolds, interior);
+    result.warnings.insert (result.warnings.begin () + static_cast<std::ptrdiff_t> (earlier_warnings),
+                            manifold_warnings.begin (), manifold_warnings.end ());
     result.feature_side = params.features;
 
     report ("merge", 0.8);

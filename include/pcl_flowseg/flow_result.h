@@ -94,7 +94,8 @@ struct StageTimings
   double delaunay_ms = 0.0;    ///< CGAL triangulation and its conversion to cells in canonical order
   double flow_ms = 0.0;        ///< flow relation (exact predicates), circumradii, volumes, centroids
   double manifolds_ms = 0.0;   ///< strengthened flow, maxima, stable manifolds and their adjacency
-  double interior_ms = 0.0;    ///< interior/exterior separation (surface reconstruction)
+  double interior_ms = 0.0;    ///< interior/exterior separation (surface reconstruction); with
+                               ///< more than one thread it runs at the same time as manifolds_ms
   double merge_ms = 0.0;       ///< rho-merging and segment statistics
   double labels_ms = 0.0;      ///< per-point labels
   double total_ms = 0.0;

@@ -7,7 +7,6 @@
 #include "segment_graph.h"
 
 #include <Eigen/Geometry>
-#include <Eigen/LU>
 
 #include <cstdint>
 
@@ -27,16 +26,14 @@ cellCircumcentre (const std::vector<Eigen::Vector3d>& vertices, const FlowCell& 
     facetSquaredRadius (vertices, tri, 0, 3, &centre);
     return centre;
   }
+  // Closed form: with u, v, w the edges from a, the centre is
+  // a + (|u|^2 (v x w) + |v|^2 (w x u) + |w|^2 (u x v)) / (2 u . (v x w)).
   const Eigen::Vector3d& a = vertices[static_cast<std::size_t> (cell.vertices[0])];
-  Eigen::Matrix3d m;
-  Eigen::Vector3d rhs;
-  for (int i = 1; i < 4; ++i)
-  {
-    const Eigen::Vector3d d = vertices[static_cast<std::size_t> (cell.vertices[i])] - a;
-    m.row (i - 1) = d.transpose ();
-    rhs[i - 1] = 0.5 * d.squaredNorm ();
-  }
-  return a + m.partialPivLu ().solve (rhs);
+  const Eigen::Vector3d u = vertices[static_cast<std::size_t> (cell.vertices[1])] - a;
+  const Eigen::Vector3d v = vertices[static_cast<std::size_t> (cell.vertices[2])] - a;
+  const Eigen::Vector3d w = vertices[static_cast<std::size_t> (cell.vertices[3])] - a;
+  const Eigen::Vector3d vw = v.cross (w);
+  return a + (u.squaredNorm () * vw + v.squaredNorm () * w.cross (u) + w.squaredNorm () * u.cross (v)) / (2.0 * u.dot (vw));
 }
 
 Eigen::Vector3d

@@ -5,8 +5,10 @@
 #include "interior_labelling.h"
 
 #include "cell_geometry.h"
+#include "cell_heap.h"
 #include "delaunay_cells.h"
 #include "denoising.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +16,6 @@
 #include <functional>
 #include <limits>
 #include <numeric>
-#include <queue>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -164,17 +165,14 @@ labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>&
   const std::size_t n = cells.size ();
   std::size_t ray_cells = 0;
   std::vector<Eigen::Vector3d> centre (n);
-  for (std::size_t c = 0; c < n; ++c)
-  {
-    centre[c] = cellCircumcentre (vertices, cells[c], d);
-  }
+  parallelFor (n, [&] (std::size_t c) { centre[c] = cellCircumcentre (vertices, cells[c], d); });
   const std::unordered_set<std::uint64_t> crust = d == 2 ? nnCrust (vertices, cells) : std::unordered_set<std::uint64_t> ();
 
   // Agreement across facet i of cell c: > 0 same side, < 0 opposite sides, |value| = confidence.
   // The cosine of the angle between the two spheres, measured at a facet vertex (on both) as the
   // angle between the directions to the two centres: unlike the law of cosines this stays accurate
   // for the huge spheres of flat cells, whose centres are far away but in a well-defined direction.
-  auto agreement = [&] (std::size_t c, int i) {
+  auto measureAgreement = [&] (std::size_t c, int i) {
     const FlowCell& cell = cells[c];
     const int nb = cell.neighbors[i];
     const Eigen::Vector3d& on = vertices[static_cast<std::size_t> (cell.vertices[(i + 1) % f])];
@@ -194,18 +192,26 @@ labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>&
     }
     return s;
   };
+  // Every value the greedy pass below may ask for, computed up front in parallel (the pass itself
+  // is sequential).
+  std::vector<std::array<double, 4>> facet_agreement (n);
+  parallelFor (n, [&] (std::size_t c) {
+    for (int i = 0; i < f; ++i)
+      facet_agreement[c][static_cast<std::size_t> (i)] = measureAgreement (c, i);
+  });
+  auto agreement = [&] (std::size_t c, int i) { return facet_agreement[c][static_cast<std::size_t> (i)]; };
 
-  std::vector<double> in_score (n, 0.0), out_score (n, 0.0);
+  std::vector<double> in_score (n, 0.0), out_score (n, 0.0), margin (n, 0.0);
   std::vector<std::int8_t> label (n, -1);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry> queue;
-  auto margin = [&] (std::size_t c) { return std::abs (in_score[c] - out_score[c]); };
+  // The undecided cells that have heard evidence, most certain (largest margin) first.
+  CellHeap queue (margin);
   // Evidence adds up: a cell hears every labelled neighbour, so one confident but wrong facet
   // (a flat cell's sphere) is outvoted (keeping only the strongest, a whole tube section of
   // knot.off came out inside out).
   auto evidence = [&] (std::size_t c, bool outside, double weight) {
     (outside ? out_score[c] : in_score[c]) += weight;
-    queue.emplace (margin (c), static_cast<int> (c));
+    margin[c] = std::abs (in_score[c] - out_score[c]);
+    queue.update (static_cast<int> (c));
   };
 
   // The outside beyond the convex hull.
@@ -252,11 +258,7 @@ labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>&
 
   while (!queue.empty ())
   {
-    const Entry top = queue.top ();
-    queue.pop ();
-    const std::size_t c = static_cast<std::size_t> (top.second);
-    if (label[c] >= 0 || top.first != margin (c))
-      continue; // already decided, or a stale entry
+    const std::size_t c = static_cast<std::size_t> (queue.pop ());
     label[c] = out_score[c] >= in_score[c] ? 0 : 1;
     for (int i = 0; i < f; ++i)
     {
@@ -394,21 +396,9 @@ measureBoundary (FlowResult& r)
   }
   else
   {
-    std::unordered_map<std::uint64_t, int> edge_count;
-    edge_count.reserve (facets.size () * 2);
-    for (const auto& t : facets)
-      for (int k = 0; k < 3; ++k)
-      {
-        ++edge_count[pairKey (t[k], t[(k + 1) % 3])];
-        on_boundary[static_cast<std::size_t> (t[k])] = 1;
-      }
-    for (const auto& e : edge_count)
-    {
-      odd |= e.second % 2 == 1;
-      rep.nonmanifold_edges += e.second != 2;
-    }
-    // Umbrellas: around each vertex, the boundary triangles must form one fan (one component when
-    // linked through shared edges).
+    // Per vertex, from the boundary triangles around it: every edge to a neighbour w must lie on
+    // exactly two triangles (counted where v < w), and the triangles must form one fan (one
+    // component when linked through shared edges). Vertices are independent: parallel.
     std::vector<std::size_t> first (r.vertices.size () + 1, 0);
     for (const auto& t : facets)
       for (int k = 0; k < 3; ++k)
@@ -420,33 +410,51 @@ measureBoundary (FlowResult& r)
     for (std::size_t k = 0; k < facets.size (); ++k)
       for (int j = 0; j < 3; ++j)
         around[fill[static_cast<std::size_t> (facets[k][j])]++] = static_cast<int> (k);
-    std::vector<int> parent;
-    std::unordered_map<int, int> seen_edge; // other vertex -> first local facet through that edge
-    for (std::size_t v = 0; v < r.vertices.size (); ++v)
-    {
+    std::vector<std::uint32_t> bad_edges (r.vertices.size (), 0);
+    std::vector<std::uint8_t> odd_edge (r.vertices.size (), 0), bad_vertex (r.vertices.size (), 0);
+    parallelFor (r.vertices.size (), [&] (std::size_t v) {
       const std::size_t m = first[v + 1] - first[v];
       if (m == 0)
-        continue;
+        return;
+      on_boundary[v] = 1;
+      thread_local std::vector<std::pair<int, int>> ends; // (other vertex, local triangle)
+      thread_local std::vector<int> parent;
+      ends.clear ();
       parent.resize (m);
       std::iota (parent.begin (), parent.end (), 0);
-      std::function<int (int)> find = [&] (int x) { return parent[static_cast<std::size_t> (x)] == x ? x : parent[static_cast<std::size_t> (x)] = find (parent[static_cast<std::size_t> (x)]); };
-      seen_edge.clear ();
       for (std::size_t k = 0; k < m; ++k)
+        for (int j : facets[static_cast<std::size_t> (around[first[v] + k])])
+          if (j != static_cast<int> (v))
+            ends.emplace_back (j, static_cast<int> (k));
+      std::sort (ends.begin (), ends.end ());
+      auto find = [&] (int x) {
+        while (parent[static_cast<std::size_t> (x)] != x)
+          x = parent[static_cast<std::size_t> (x)] = parent[static_cast<std::size_t> (parent[static_cast<std::size_t> (x)])];
+        return x;
+      };
+      for (std::size_t i = 0; i < ends.size ();)
       {
-        const auto& t = facets[static_cast<std::size_t> (around[first[v] + k])];
-        for (int j = 0; j < 3; ++j)
+        std::size_t j = i + 1;
+        for (; j < ends.size () && ends[j].first == ends[i].first; ++j)
+          parent[static_cast<std::size_t> (find (ends[j].second))] = find (ends[i].second);
+        const std::size_t count = j - i;
+        if (static_cast<int> (v) < ends[i].first)
         {
-          if (t[j] == static_cast<int> (v))
-            continue;
-          auto it = seen_edge.emplace (t[j], static_cast<int> (k));
-          if (!it.second)
-            parent[static_cast<std::size_t> (find (static_cast<int> (k)))] = find (it.first->second);
+          odd_edge[v] |= count % 2 == 1;
+          bad_edges[v] += count != 2;
         }
+        i = j;
       }
       int components = 0;
       for (std::size_t k = 0; k < m; ++k)
         components += find (static_cast<int> (k)) == static_cast<int> (k);
-      rep.nonmanifold_vertices += components > 1;
+      bad_vertex[v] = components > 1;
+    });
+    for (std::size_t v = 0; v < r.vertices.size (); ++v)
+    {
+      odd |= odd_edge[v] != 0;
+      rep.nonmanifold_edges += bad_edges[v];
+      rep.nonmanifold_vertices += bad_vertex[v];
     }
   }
   rep.vertices_off_boundary = 0;

@@ -7,6 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
 #include <cstddef>
@@ -53,6 +54,21 @@ parallelFor (std::size_t n, const Body& body)
     for (std::size_t i = r.begin (); i != r.end (); ++i)
       body (i);
   });
+}
+
+/** \brief Runs \a first and \a second, at the same time when two workers are allowed. They must
+  * not write the same data. */
+template <class First, class Second>
+void
+runSideBySide (const First& first, const Second& second)
+{
+  if (workerThreads () < 2)
+  {
+    first ();
+    second ();
+    return;
+  }
+  tbb::parallel_invoke (first, second);
 }
 
 } // namespace core
