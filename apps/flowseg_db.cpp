@@ -35,6 +35,9 @@ Shape files: .pcd .ply .xyz .txt .csv (points) and .off .obj .ply meshes (sample
 
 Options:
   -k N                 query: how many results (default 10; 0 = all)
+      --candidates N   query: align the N stored shapes whose signature summaries are nearest
+                       (default )" << pcl_flowseg::kDefaultCandidates << R"(; 0 = align every stored shape); the rest are
+                       listed after them by summary distance, similarity "-"
       --label L        add: class of the added shapes (default: their folder name)
       --rho R          merge threshold (default )" << pcl_flowseg::kDefaultRho << R"()
       --significance F features above this share of the interior volume (default )" << pcl_flowseg::kDefaultSignificance << R"()
@@ -56,6 +59,7 @@ usageError (const std::string& message)
 struct Options
 {
   std::size_t k = 10;
+  std::size_t candidates = pcl_flowseg::kDefaultCandidates;
   std::string label;
   bool has_label = false;
   double rho = pcl_flowseg::kDefaultRho;
@@ -146,6 +150,8 @@ main (int argc, char** argv)
     }
     else if (a == "-k" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 0 && v == std::floor (v))
       o.k = static_cast<std::size_t> (v), ++i;
+    else if (a == "--candidates" && more && flowseg_app::parseNumber (argv[i + 1], v) && v >= 0 && v == std::floor (v))
+      o.candidates = static_cast<std::size_t> (v), ++i;
     else if (a == "--label" && more)
       o.label = argv[++i], o.has_label = true;
     else if (a == "--rho" && more && flowseg_app::parseNumber (argv[i + 1], v) && v > 0)
@@ -233,6 +239,7 @@ main (int argc, char** argv)
     }
     pcl::SignatureMatcher matcher;
     matcher.setThreshold (o.threshold);
+    db.setCandidates (o.candidates);
     const auto t0 = std::chrono::steady_clock::now ();
     const auto hits = db.query (s, o.k, matcher);
     const double ms = std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
@@ -240,11 +247,14 @@ main (int argc, char** argv)
     for (std::size_t r = 0; r < hits.size (); ++r)
     {
       const auto& e = db.entries ()[hits[r].entry];
-      std::printf ("%zu\t%.4f\t%.4f\t%s\t%s\n", r + 1, hits[r].similarity, hits[r].score, e.label.c_str (), e.name.c_str ());
+      if (hits[r].aligned)
+        std::printf ("%zu\t%.4f\t%.4f\t%s\t%s\n", r + 1, hits[r].similarity, hits[r].score, e.label.c_str (), e.name.c_str ());
+      else
+        std::printf ("%zu\t-\t-\t%s\t%s\n", r + 1, e.label.c_str (), e.name.c_str ());
     }
     if (!o.quiet)
-      std::fprintf (stderr, "query against %zu stored signatures: %.2f ms (%.4f ms per shape)\n", db.size (), ms,
-                    db.size () ? ms / static_cast<double> (db.size ()) : 0.0);
+      std::fprintf (stderr, "query against %zu stored signatures (%s aligned): %.2f ms\n", db.size (),
+                    o.candidates ? std::to_string (std::min (o.candidates, db.size ())).c_str () : "all", ms);
     return 0;
   }
   else

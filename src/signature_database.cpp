@@ -6,12 +6,17 @@
 
 #include "atomic_file.h"
 
+#include <pcl_flowseg/signature_summary.h>
+
+#include <flann/flann.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace pcl_flowseg {
@@ -30,6 +35,8 @@ Status
 SignatureDatabase::load (const std::string& path)
 {
   entries_.clear ();
+  by_name_.clear ();
+  index_.reset ();
   std::ifstream in (path, std::ios::binary);
   if (!in)
     return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
@@ -78,6 +85,10 @@ SignatureDatabase::load (const std::string& path)
     loaded.push_back (std::move (e));
   }
   entries_ = std::move (loaded);
+  index_.reset ();
+  by_name_.clear ();
+  for (std::size_t i = 0; i < entries_.size (); ++i)
+    by_name_[entries_[i].name] = i;
   return Status::success ();
 }
 
@@ -105,12 +116,14 @@ SignatureDatabase::save (const std::string& path) const
 bool
 SignatureDatabase::add (const ShapeEntry& entry)
 {
-  for (auto& e : entries_)
-    if (e.name == entry.name)
-    {
-      e = entry;
-      return false;
-    }
+  index_.reset ();
+  const auto found = by_name_.find (entry.name);
+  if (found != by_name_.end ())
+  {
+    entries_[found->second] = entry;
+    return false;
+  }
+  by_name_.emplace (entry.name, entries_.size ());
   entries_.push_back (entry);
   return true;
 }
@@ -118,21 +131,87 @@ SignatureDatabase::add (const ShapeEntry& entry)
 bool
 SignatureDatabase::contains (const std::string& name) const
 {
-  return std::any_of (entries_.begin (), entries_.end (), [&] (const ShapeEntry& e) { return e.name == name; });
+  return by_name_.count (name) > 0;
+}
+
+/** Summaries of the stored signatures in a FLANN k-d tree, one tree per dimension (2D, 3D). */
+struct SignatureDatabase::CandidateIndex
+{
+  struct Tree
+  {
+    std::vector<std::size_t> entry;  // row -> entry index
+    std::vector<float> rows;         // kSummarySize floats per row
+    std::unique_ptr<flann::Index<flann::L2<float>>> index;
+  };
+  Tree trees[2]; // [0]: 2D, [1]: 3D
+};
+
+std::shared_ptr<const SignatureDatabase::CandidateIndex>
+SignatureDatabase::candidateIndex () const
+{
+  std::lock_guard<std::mutex> lock (*index_mutex_);
+  if (index_)
+    return index_;
+  auto built = std::make_shared<CandidateIndex> ();
+  for (std::size_t i = 0; i < entries_.size (); ++i)
+  {
+    auto& tree = built->trees[entries_[i].signature.dimension == 2 ? 0 : 1];
+    const auto summary = signatureSummary (entries_[i].signature);
+    tree.entry.push_back (i);
+    tree.rows.insert (tree.rows.end (), summary.begin (), summary.end ());
+  }
+  for (auto& tree : built->trees)
+    if (!tree.entry.empty ())
+    {
+      tree.index.reset (new flann::Index<flann::L2<float>> (flann::Matrix<float> (tree.rows.data (), tree.entry.size (), kSummarySize),
+                                                            flann::KDTreeSingleIndexParams (10)));
+      tree.index->buildIndex ();
+    }
+  index_ = built;
+  return index_;
 }
 
 std::vector<QueryHit>
 SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const
 {
+  const auto index = candidateIndex ();
+  const auto& tree = index->trees[signature.dimension == 2 ? 0 : 1];
+  const std::size_t stored = tree.entry.size ();
+  if (stored == 0)
+    return {};
+  // Every stored shape of this dimension by summary distance: the nearest are the candidates. The
+  // k-d tree answers exactly; only as many rows as are needed are asked for.
+  const std::size_t aligned = candidates_ == 0 ? stored : std::min (candidates_, stored);
+  const std::size_t wanted = k == 0 ? stored : std::min (stored, std::max (k, aligned));
+  auto summary = signatureSummary (signature);
+  std::vector<int> rows (wanted);
+  std::vector<float> distances (wanted);
+  flann::Matrix<int> row_matrix (rows.data (), 1, wanted);
+  flann::Matrix<float> distance_matrix (distances.data (), 1, wanted);
+  tree.index->knnSearch (flann::Matrix<float> (summary.data (), 1, kSummarySize), row_matrix, distance_matrix, wanted,
+                         flann::SearchParams (flann::FLANN_CHECKS_UNLIMITED));
   std::vector<QueryHit> hits;
-  hits.reserve (entries_.size ());
-  for (std::size_t i = 0; i < entries_.size (); ++i)
-    if (entries_[i].signature.dimension == signature.dimension)
+  hits.reserve (wanted);
+  for (std::size_t r = 0; r < wanted; ++r)
+  {
+    QueryHit hit;
+    hit.entry = tree.entry[static_cast<std::size_t> (rows[r])];
+    hit.summary_distance = std::sqrt (static_cast<double> (distances[r]));
+    if (r < aligned)
     {
-      const auto m = matcher.match (signature, entries_[i].signature);
-      hits.push_back (QueryHit{i, m.similarity, m.score});
+      const auto m = matcher.match (signature, entries_[hit.entry].signature);
+      hit.similarity = m.similarity;
+      hit.score = m.score;
     }
-  std::stable_sort (hits.begin (), hits.end (), [] (const QueryHit& a, const QueryHit& b) { return a.similarity > b.similarity; });
+    else
+    {
+      hit.aligned = false;
+      hit.similarity = hit.score = std::numeric_limits<double>::quiet_NaN ();
+    }
+    hits.push_back (hit);
+  }
+  std::stable_sort (hits.begin (), hits.begin () + static_cast<std::ptrdiff_t> (aligned),
+                    [] (const QueryHit& a, const QueryHit& b) { return a.similarity > b.similarity; });
   if (k > 0 && hits.size () > k)
     hits.resize (k);
   return hits;

@@ -140,7 +140,9 @@ expect "db build" 0 "9 shapes" -- "$db" build "$work/shapes.db" "$work/tree" -j 
 expect "db list" 0 "snowman3d" -- "$db" list "$work/shapes.db"
 expect "db query finds the class" 0 "^1.*snowman3d" -- "$db" query "$work/shapes.db" "$work/tree/snowman3d/snowman3d-1.pcd" -k 3
 expect "db add" 0 "10 shapes" -- "$db" add "$work/shapes.db" "$src/samples/hand2d.pcd" --label hand
-expect "db query reports its time" 0 "ms per shape" -- "$db" query "$work/shapes.db" "$work/tree/animal3d/animal3d-2.pcd"
+expect "db query with few candidates lists the rest unaligned" 0 "^3	-	-" -- "$db" query "$work/shapes.db" "$work/tree/snowman3d/snowman3d-1.pcd" -k 3 --candidates 2
+expect "db bad candidates" 2 "candidates" -- "$db" query "$work/shapes.db" x.pcd --candidates -1
+expect "db query reports its time" 0 "aligned): " -- "$db" query "$work/shapes.db" "$work/tree/animal3d/animal3d-2.pcd"
 printf 'not a database\n' > "$work/foreign.db"
 expect "db foreign file" 1 "not a pcl_flowseg signature database" -- "$db" query "$work/foreign.db" "$work/tree/animal3d/animal3d-2.pcd"
 expect "db missing file" 1 "cannot open" -- "$db" list "$work/none.db"

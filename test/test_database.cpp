@@ -137,3 +137,53 @@ TEST (Png, WellFormed)
   EXPECT_FALSE (writePng (p, 2, 2, 1, std::vector<std::uint8_t> (3)).ok);
   std::remove (p.c_str ());
 }
+
+TEST (Database, CandidateIndexAlignsTheNearestSummariesFirst)
+{
+  // Many stored shapes: ones made of two equal points, of three, ... and one copy of the query
+  // (turned by a quarter turn, which the summary and the matcher ignore).
+  SignatureDatabase db;
+  for (int n = 1; n <= 8; ++n)
+    for (int copy = 0; copy < 10; ++copy)
+    {
+      std::vector<WeightedPoint> pts;
+      for (int i = 0; i < n; ++i)
+        pts.push_back (WeightedPoint{Eigen::Vector3d (std::cos (i + 0.1 * copy), std::sin (i + 0.1 * copy), 0.1 * copy), 1.0 / n});
+      db.add (entry ("n" + std::to_string (n) + "_" + std::to_string (copy), "n" + std::to_string (n), pts));
+    }
+  const std::vector<WeightedPoint> query_points = {WeightedPoint{Eigen::Vector3d (2, 0, 0), 0.6}, WeightedPoint{Eigen::Vector3d (0, 1, 0), 0.3},
+                                                   WeightedPoint{Eigen::Vector3d (0, 0, -1), 0.1}};
+  std::vector<WeightedPoint> turned = query_points;
+  for (auto& p : turned)
+    p.position = Eigen::Vector3d (-p.position.y (), p.position.x (), p.position.z ());
+  db.add (entry ("copy", "target", turned));
+  Signature query;
+  query.points = query_points;
+  const pcl::SignatureMatcher matcher;
+
+  db.setCandidates (5);
+  const auto hits = db.query (query, 0, matcher);
+  ASSERT_EQ (hits.size (), db.size ());
+  EXPECT_EQ (db.entries ()[hits[0].entry].name, "copy");
+  EXPECT_NEAR (hits[0].similarity, 1.0, 1e-6);
+  EXPECT_NEAR (hits[0].summary_distance, 0.0, 1e-5);
+  for (std::size_t r = 0; r < hits.size (); ++r)
+    EXPECT_EQ (hits[r].aligned, r < 5) << r;
+  for (std::size_t r = 6; r < hits.size (); ++r) // the unaligned follow by summary distance
+    EXPECT_LE (hits[r - 1].summary_distance, hits[r].summary_distance);
+
+  // Every shape aligned: the same best match, and every similarity set and ordered.
+  db.setCandidates (0);
+  const auto all = db.query (query, 0, matcher);
+  ASSERT_EQ (all.size (), db.size ());
+  EXPECT_EQ (db.entries ()[all[0].entry].name, "copy");
+  for (std::size_t r = 1; r < all.size (); ++r)
+  {
+    EXPECT_TRUE (all[r].aligned);
+    EXPECT_GE (all[r - 1].similarity, all[r].similarity);
+  }
+  // Replacing a shape by name keeps the count and is seen by the next query (index rebuilt).
+  EXPECT_FALSE (db.add (entry ("copy", "target", {WeightedPoint{Eigen::Vector3d (0, 0, 0), 1.0}})));
+  EXPECT_EQ (db.size (), 81u);
+  EXPECT_NE (db.entries ()[db.query (query, 1, matcher)[0].entry].name, "copy");
+}

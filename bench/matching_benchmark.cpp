@@ -1,0 +1,240 @@
+/*
+ * flowseg_bench_matching: how fast a signature database answers queries, and what picking
+ * candidates by signature summary costs in retrieval quality.
+ *
+ * 1. Real signatures (the TOSCA point samples, when ../shared is there): leave-one-out retrieval
+ *    (nearest neighbour, first tier) with every stored shape aligned and with the candidate index
+ *    at several candidate counts, and the time per query.
+ * 2. Databases of 300 and 100,000 signatures made from those (or from generated shapes) by random
+ *    rotations, mirroring, position jitter and weight changes: time per query with the default
+ *    candidates, and with every shape aligned where that finishes in reasonable time.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/shape_generator.h>
+#include <pcl_flowseg/shape_input.h>
+#include <pcl_flowseg/signature.h>
+#include <pcl_flowseg/signature_database.h>
+#include <pcl_flowseg/signature_matcher.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+using pcl_flowseg::Signature;
+
+double
+msSince (Clock::time_point t)
+{
+  return std::chrono::duration<double, std::milli> (Clock::now () - t).count ();
+}
+
+struct Labelled
+{
+  std::string label;
+  Signature signature;
+};
+
+/** Signatures of the shapes in DIR/<class>/ files; empty when DIR is missing. */
+std::vector<Labelled>
+signaturesIn (const std::string& dir)
+{
+  std::vector<Labelled> out;
+  if (!fs::is_directory (dir))
+    return out;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::recursive_directory_iterator (dir))
+    if (e.is_regular_file () && pcl_flowseg::isShapeFile (e.path ().string ()))
+      files.push_back (e.path ());
+  std::sort (files.begin (), files.end ());
+  for (const auto& f : files)
+  {
+    Labelled l;
+    l.label = f.parent_path ().filename ().string ();
+    const auto st = pcl_flowseg::signatureOfShapeFile (f.string (), pcl_flowseg::ShapeInputOptions (), pcl_flowseg::FlowParameters (),
+                                                       pcl_flowseg::kDefaultSignificance, l.signature);
+    if (!st)
+    {
+      std::fprintf (stderr, "skipped %s: %s\n", f.c_str (), st.message.c_str ());
+      continue;
+    }
+    out.push_back (l);
+    std::fprintf (stderr, "\rsignatures: %zu/%zu", out.size (), files.size ());
+  }
+  std::fprintf (stderr, "\n");
+  return out;
+}
+
+/** Signatures of the generated 3D shapes with their parts moved about: a stand-in collection. */
+std::vector<Labelled>
+generatedSignatures (std::size_t count)
+{
+  std::vector<Labelled> out;
+  std::mt19937 rng (5);
+  std::normal_distribution<double> jitter (0.0, 0.15);
+  for (std::size_t k = 0; out.size () < count && k < 4 * count; ++k)
+    for (auto shape : pcl_flowseg::sampleShapes ())
+    {
+      if (shape.dimension != 3 || out.size () >= count)
+        continue;
+      for (auto& part : shape.parts)
+      {
+        part.centre += Eigen::Vector3d (jitter (rng), jitter (rng), jitter (rng)) * part.radii.minCoeff ();
+        part.radii *= 1.0 + jitter (rng);
+      }
+      pcl_flowseg::FlowParameters params;
+      pcl_flowseg::FlowResult result;
+      Labelled l;
+      l.label = shape.name;
+      if (pcl_flowseg::runFlowSegmentation (pcl_flowseg::sampleBoundary (shape, 3000, static_cast<std::uint32_t> (k + 1)), params, result) &&
+          pcl_flowseg::signatureFromSegmentation (result, pcl_flowseg::kDefaultSignificance, l.signature))
+        out.push_back (l);
+    }
+  return out;
+}
+
+/** A copy of \a s turned by a random rotation (mirrored half of the time), its points moved by
+  * Gaussian jitter and its weights changed by up to 10%: the same shape, sampled again. */
+Signature
+variant (const Signature& s, std::mt19937& rng)
+{
+  std::normal_distribution<double> gauss (0.0, 1.0);
+  std::uniform_real_distribution<double> unit (0.9, 1.1);
+  Eigen::Quaterniond q (gauss (rng), gauss (rng), gauss (rng), gauss (rng));
+  Eigen::Matrix3d r = q.normalized ().toRotationMatrix ();
+  if (s.dimension == 2)
+    r = Eigen::AngleAxisd (gauss (rng), Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
+  if (rng () % 2)
+    r.col (0) *= -1.0;
+  Signature v = s;
+  double total = 0.0;
+  for (auto& p : v.points)
+  {
+    p.position = r * p.position + 0.03 * Eigen::Vector3d (gauss (rng), gauss (rng), s.dimension == 2 ? 0.0 : gauss (rng));
+    p.weight *= unit (rng);
+    total += p.weight;
+  }
+  for (auto& p : v.points)
+    p.weight /= total;
+  std::stable_sort (v.points.begin (), v.points.end (), [] (const auto& a, const auto& b) { return a.weight > b.weight; });
+  return v;
+}
+
+/** Leave-one-out retrieval over \a shapes with the given candidate count. */
+void
+retrieval (const std::vector<Labelled>& shapes, std::size_t candidates, const pcl::SignatureMatcher& matcher)
+{
+  pcl_flowseg::SignatureDatabase db;
+  db.setCandidates (candidates);
+  std::map<std::string, int> class_size;
+  for (std::size_t i = 0; i < shapes.size (); ++i)
+  {
+    db.add (pcl_flowseg::ShapeEntry{std::to_string (i), shapes[i].label, shapes[i].signature});
+    ++class_size[shapes[i].label];
+  }
+  double nn = 0.0, ft = 0.0, ms = 0.0;
+  for (std::size_t i = 0; i < shapes.size (); ++i)
+  {
+    const auto start = Clock::now ();
+    auto hits = db.query (shapes[i].signature, 0, matcher);
+    ms += msSince (start);
+    hits.erase (std::remove_if (hits.begin (), hits.end (), [&] (const auto& h) { return h.entry == i; }), hits.end ());
+    const int tier = class_size[shapes[i].label] - 1;
+    if (tier <= 0 || hits.empty ())
+      continue;
+    nn += db.entries ()[hits[0].entry].label == shapes[i].label;
+    int same = 0;
+    for (int r = 0; r < tier && r < static_cast<int> (hits.size ()); ++r)
+      same += db.entries ()[hits[static_cast<std::size_t> (r)].entry].label == shapes[i].label;
+    ft += static_cast<double> (same) / tier;
+  }
+  const double n = static_cast<double> (shapes.size ());
+  std::printf ("| %s | %zu | %.3f | %.3f | %.3f |\n", candidates ? std::to_string (candidates).c_str () : "all", shapes.size (), nn / n,
+               ft / n, ms / n);
+}
+
+/** Mean time per query against \a size stored variants of \a base, with \a candidates. */
+double
+queryTime (const std::vector<Labelled>& base, std::size_t size, std::size_t candidates, int queries,
+           const pcl::SignatureMatcher& matcher, double& build_ms)
+{
+  std::mt19937 rng (11);
+  pcl_flowseg::SignatureDatabase db;
+  for (std::size_t i = 0; i < size; ++i)
+    db.add (pcl_flowseg::ShapeEntry{"shape" + std::to_string (i), base[i % base.size ()].label, variant (base[i % base.size ()].signature, rng)});
+  db.setCandidates (candidates);
+  auto start = Clock::now ();
+  db.query (base[0].signature, 1, matcher); // builds the candidate index
+  build_ms = msSince (start);
+  start = Clock::now ();
+  for (int q = 0; q < queries; ++q)
+    db.query (variant (base[static_cast<std::size_t> (q) % base.size ()].signature, rng), 10, matcher);
+  return msSince (start) / queries;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  std::string dir = "../shared/data/tosca_points";
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--shapes" && i + 1 < argc)
+      dir = argv[++i];
+    else
+    {
+      std::fprintf (stderr, "usage: flowseg_bench_matching [--shapes DIR (../shared/data/tosca_points; class = folder)]\n");
+      return 2;
+    }
+  }
+  const pcl::SignatureMatcher matcher;
+  std::vector<Labelled> base = signaturesIn (dir);
+  std::string source = dir;
+  if (base.empty ())
+  {
+    std::fprintf (stderr, "flowseg_bench_matching: no shapes in %s, using generated shapes\n", dir.c_str ());
+    base = generatedSignatures (60);
+    source = "generated shapes (animal3d, dumbbell3d, snowman3d with moved parts)";
+  }
+  if (base.empty ())
+  {
+    std::fprintf (stderr, "flowseg_bench_matching: no signatures\n");
+    return 1;
+  }
+  double mean_points = 0.0;
+  for (const auto& b : base)
+    mean_points += static_cast<double> (b.signature.points.size ()) / static_cast<double> (base.size ());
+  std::printf ("signatures of %s: %zu, %.1f points each on average\n\n", source.c_str (), base.size (), mean_points);
+
+  std::printf ("Leave-one-out retrieval (a query ranks every other shape)\n\n");
+  std::printf ("| candidates aligned | shapes | nearest neighbour | first tier | ms per query |\n|---|---|---|---|---|\n");
+  for (std::size_t c : {std::size_t (0), std::size_t (8), std::size_t (16), std::size_t (24), std::size_t (32)})
+    retrieval (base, c, matcher);
+
+  std::printf ("\nQueries (top 10) against databases of randomly rotated, mirrored and jittered copies\n\n");
+  std::printf ("| stored signatures | candidates aligned | ms per query | queries per second | index build ms |\n|---|---|---|---|---|\n");
+  struct Run { std::size_t size, candidates; int queries; };
+  for (const Run& run : {Run{300, 0, 20}, Run{300, pcl_flowseg::kDefaultCandidates, 200}, Run{100000, pcl_flowseg::kDefaultCandidates, 200},
+                         Run{100000, 0, 2}})
+  {
+    double build = 0.0;
+    const double ms = queryTime (base, run.size, run.candidates, run.queries, matcher, build);
+    std::printf ("| %zu | %s | %.3f | %.0f | %.1f |\n", run.size, run.candidates ? std::to_string (run.candidates).c_str () : "all", ms,
+                 1000.0 / ms, build);
+    std::fflush (stdout);
+  }
+  return 0;
+}
