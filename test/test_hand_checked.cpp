@@ -56,7 +56,7 @@ TEST (HandChecked, ObtuseTriangleFlowsIntoAcuteNeighbour)
   const FlowCell& flat = r.cells[r.cells[0].flow_mask ? 0 : 1];
   ASSERT_GE (flat.successor_facet, 0);
   // The flat triangle's successor facet is the edge AB: opposite vertex D (index 3).
-  EXPECT_EQ (flat.vertices[static_cast<std::size_t> (flat.successor_facet)], 3);
+  EXPECT_EQ (flat.vertices[static_cast<std::size_t> (flat.successor_facet)], r.point_to_vertex[3]);
   for (std::uint32_t label : r.point_labels)
     EXPECT_EQ (label, 0u);
 }
@@ -96,7 +96,7 @@ TEST (HandChecked, TetrahedronFlowsIntoNeighbourHoldingTheMaximum)
   EXPECT_EQ (r.segments[0].cell_count, 2u);
   const FlowCell& low = r.cells[r.cells[0].flow_mask ? 0 : 1];
   EXPECT_EQ (__builtin_popcount (low.flow_mask), 1);
-  EXPECT_EQ (low.vertices[static_cast<std::size_t> (low.successor_facet)], 4); // across ABC, opposite D
+  EXPECT_EQ (low.vertices[static_cast<std::size_t> (low.successor_facet)], r.point_to_vertex[4]); // across ABC, opposite D
 }
 
 TEST (HandChecked, RegularTetrahedronIsOneMaximum)

@@ -3,7 +3,9 @@
  * CGAL's exact predicate, the parallel triangulation with the sequential one.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "core/delaunay_cells.h"
 #include "core/flow_predicate.h"
+#include "core/parallel.h"
 #include "test_support.h"
 
 #include <pcl_flowseg/shape_generator.h>
@@ -95,4 +97,21 @@ TEST (ParallelCore, ThreadCountDoesNotChangeTheResult)
   EXPECT_EQ (a.maxima.size (), b.maxima.size ());
   EXPECT_EQ (a.segments.size (), b.segments.size ());
   EXPECT_EQ (a.point_labels, b.point_labels);
+}
+
+TEST (ParallelCore, ParallelInsertionGivesTheSequentialCells)
+{
+  // Forced parallel (the automatic choice also looks at the system load).
+  const auto points = sampleBoundary (sampleShape ("snowman3d"), 20000, 4);
+  const core::WorkerThreads two (2);
+  std::vector<FlowCell> sequential, parallel;
+  std::string error;
+  ASSERT_TRUE (core::triangulate3D (points, sequential, error, core::Insertion::Sequential)) << error;
+  ASSERT_TRUE (core::triangulate3D (points, parallel, error, core::Insertion::Parallel)) << error;
+  ASSERT_EQ (sequential.size (), parallel.size ());
+  for (std::size_t k = 0; k < sequential.size (); ++k)
+  {
+    ASSERT_EQ (sequential[k].vertices, parallel[k].vertices) << k;
+    ASSERT_EQ (sequential[k].neighbors, parallel[k].neighbors) << k;
+  }
 }

@@ -143,7 +143,8 @@ struct FlowResult
   std::size_t non_finite_points = 0; ///< points skipped for NaN/Inf coordinates
   std::size_t duplicate_points = 0;  ///< points equal to an earlier point (labelled like it)
 
-  /** Coordinates of the unique finite points (the triangulation's vertices), input frame. */
+  /** Coordinates of the unique finite points (the triangulation's vertices), input frame, in a
+    * spatial order (along a Z-order curve), not in input order: use point_to_vertex. */
   std::vector<Eigen::Vector3d> vertices;
   /** For each input point, its vertex in \a vertices, or -1 when it was not finite. */
   std::vector<int> point_to_vertex;

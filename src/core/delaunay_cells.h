@@ -19,11 +19,20 @@ bool
 triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells, std::string& error);
 
 /** \brief Triangulates 3D points into tetrahedra (vertices and neighbors, canonical order); in
-  * parallel (CGAL with TBB) when workerThreads() > 1 and the input is large enough. Returns false
+  * parallel (CGAL with TBB) when workerThreads() > 1, the input is large enough and the system's
+  * load leaves a core to spare. Returns false
   * with \a error when the points do not span space (fewer than 4, collinear or coplanar). Points
   * must be distinct. */
+enum class Insertion
+{
+  Automatic,  ///< parallel when it pays (see above)
+  Sequential,
+  Parallel    ///< whenever TBB may use two workers (tests)
+};
+
 bool
-triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells, std::string& error);
+triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells, std::string& error,
+               Insertion insertion = Insertion::Automatic);
 
 /** \brief The flow relation of triangles: flow_mask (exact test: a triangle flows across the edge
   * opposite an obtuse angle), squared_radius and volume (area). Centroids are left for the caller,

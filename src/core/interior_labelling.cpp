@@ -8,6 +8,7 @@
 #include "cell_heap.h"
 #include "delaunay_cells.h"
 #include "denoising.h"
+#include "huge_pages.h"
 #include "parallel.h"
 
 #include <algorithm>
@@ -164,7 +165,8 @@ labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>&
   const int f = d + 1;
   const std::size_t n = cells.size ();
   std::size_t ray_cells = 0;
-  std::vector<Eigen::Vector3d> centre (n);
+  std::vector<Eigen::Vector3d> centre;
+  assignOnHugePages (centre, n, Eigen::Vector3d (Eigen::Vector3d::Zero ()));
   parallelFor (n, [&] (std::size_t c) { centre[c] = cellCircumcentre (vertices, cells[c], d); });
   const std::unordered_set<std::uint64_t> crust = d == 2 ? nnCrust (vertices, cells) : std::unordered_set<std::uint64_t> ();
 
@@ -194,14 +196,18 @@ labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>&
   };
   // Every value the greedy pass below may ask for, computed up front in parallel (the pass itself
   // is sequential).
-  std::vector<std::array<double, 4>> facet_agreement (n);
+  std::vector<std::array<double, 4>> facet_agreement;
+  assignOnHugePages (facet_agreement, n);
   parallelFor (n, [&] (std::size_t c) {
     for (int i = 0; i < f; ++i)
       facet_agreement[c][static_cast<std::size_t> (i)] = measureAgreement (c, i);
   });
   auto agreement = [&] (std::size_t c, int i) { return facet_agreement[c][static_cast<std::size_t> (i)]; };
 
-  std::vector<double> in_score (n, 0.0), out_score (n, 0.0), margin (n, 0.0);
+  std::vector<double> in_score, out_score, margin;
+  assignOnHugePages (in_score, n, 0.0);
+  assignOnHugePages (out_score, n, 0.0);
+  assignOnHugePages (margin, n, 0.0);
   std::vector<std::int8_t> label (n, -1);
   // The undecided cells that have heard evidence, most certain (largest margin) first.
   CellHeap queue (margin);

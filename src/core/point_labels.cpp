@@ -5,6 +5,7 @@
 #include "point_labels.h"
 
 #include "cell_geometry.h"
+#include "parallel.h"
 
 #include <algorithm>
 
@@ -22,9 +23,8 @@ labelPoints (FlowResult& result)
 
   // Per vertex: total incident volume per segment, the largest wins (ties: lower segment id).
   std::vector<std::uint32_t> vertex_label (nv, kNoSegment);
-  std::vector<std::pair<int, double>> sums;
-  for (std::size_t v = 0; v < nv; ++v)
-  {
+  parallelFor (nv, [&] (std::size_t v) {
+    thread_local std::vector<std::pair<int, double>> sums;
     sums.clear ();
     for (std::size_t k = inc.first[v]; k < inc.first[v + 1]; ++k)
     {
@@ -48,7 +48,7 @@ labelPoints (FlowResult& result)
       }
     if (best >= 0)
       vertex_label[v] = static_cast<std::uint32_t> (best);
-  }
+  });
 
   for (FlowSegment& s : result.segments)
     s.point_count = 0;

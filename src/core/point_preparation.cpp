@@ -4,10 +4,16 @@
  */
 #include "point_preparation.h"
 
+#include "parallel.h"
+
+#include <tbb/parallel_sort.h>
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -22,6 +28,61 @@ lexLess (const Eigen::Vector3d& a, const Eigen::Vector3d& b)
   if (a.y () != b.y ()) return a.y () < b.y ();
   return a.z () < b.z ();
 }
+/** Interleaves the low 21 bits of x, y and z (a Morton code). */
+std::uint64_t
+mortonCode (std::uint32_t x, std::uint32_t y, std::uint32_t z)
+{
+  auto spread = [] (std::uint64_t v) {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffULL;
+    v = (v | v << 16) & 0x1f0000ff0000ffULL;
+    v = (v | v << 8) & 0x100f00f00f00f00fULL;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+  };
+  return spread (x) | spread (y) << 1 | spread (z) << 2;
+}
+
+/** Renumbers the vertices along a Z-order curve through their bounding box (ties by coordinates):
+  * cells numbered by their vertices (canonical order) are then close in memory when close in
+  * space, whatever the order of the input, and the numbering does not depend on that order. */
+void
+putInSpatialOrder (PreparedPoints& out)
+{
+  const std::size_t n = out.vertices.size ();
+  Eigen::Vector3d lo = out.vertices.front (), hi = out.vertices.front ();
+  for (const auto& v : out.vertices)
+  {
+    lo = lo.cwiseMin (v);
+    hi = hi.cwiseMax (v);
+  }
+  const Eigen::Vector3d extent = (hi - lo).cwiseMax (Eigen::Vector3d::Constant (std::numeric_limits<double>::min ()));
+  std::vector<std::pair<std::uint64_t, int>> keyed (n);
+  parallelFor (n, [&] (std::size_t k) {
+    std::uint32_t q[3];
+    for (int a = 0; a < 3; ++a)
+      q[a] = static_cast<std::uint32_t> (std::min (2097151.0, std::floor ((out.vertices[k][a] - lo[a]) / extent[a] * 2097151.0)));
+    keyed[k] = {mortonCode (q[0], q[1], q[2]), static_cast<int> (k)};
+  });
+  tbb::parallel_sort (keyed.begin (), keyed.end (), [&] (const auto& a, const auto& b) {
+    if (a.first != b.first)
+      return a.first < b.first;
+    return lexLess (out.vertices[static_cast<std::size_t> (a.second)], out.vertices[static_cast<std::size_t> (b.second)]);
+  });
+  std::vector<int> new_index (n);
+  std::vector<Eigen::Vector3d> ordered (n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    new_index[static_cast<std::size_t> (keyed[k].second)] = static_cast<int> (k);
+    ordered[k] = out.vertices[static_cast<std::size_t> (keyed[k].second)];
+  }
+  out.vertices.swap (ordered);
+  for (int& v : out.point_to_vertex)
+    if (v >= 0)
+      v = new_index[static_cast<std::size_t> (v)];
+}
+
 } // namespace
 
 bool
@@ -79,6 +140,7 @@ preparePoints (const std::vector<Eigen::Vector3d>& points, const FlowParameters&
   }
   if (out.duplicates > 0)
     warnings.push_back (std::to_string (out.duplicates) + " duplicate point(s) share the vertex (and label) of their first copy");
+  putInSpatialOrder (out);
 
   // Best-fit plane: spread of the points along the normal, relative to the bounding box.
   Eigen::Vector3d lo = out.vertices.front (), hi = out.vertices.front ();

@@ -5,6 +5,7 @@
 #include "stable_manifolds.h"
 
 #include "cell_geometry.h"
+#include "huge_pages.h"
 
 #include <algorithm>
 #include <limits>
@@ -26,11 +27,13 @@ computeStableManifolds (std::vector<FlowCell>& cells, int dimension)
   const std::size_t n = cells.size ();
   const double inf = std::numeric_limits<double>::infinity ();
 
-  std::vector<int> root (n, kRootUnknown);   // maximum cell reached, or kRootInfinity
-  std::vector<double> strength (n, 0.0);
-  std::vector<int> pending (n, 0);           // finite successors not yet resolved
-  std::vector<int> ready;
+  std::vector<int> root, pending, ready; // maximum cell reached (or kRootInfinity); finite successors not yet resolved
+  std::vector<double> strength;
+  assignOnHugePages (root, n, kRootUnknown);
+  assignOnHugePages (strength, n, 0.0);
+  assignOnHugePages (pending, n, 0);
   ready.reserve (n);
+  adviseHugePages (ready.data (), n * sizeof (int));
 
   for (std::size_t c = 0; c < n; ++c)
   {
