@@ -10,6 +10,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "atomic_file.h"
+#include "mesh_picture.h"
 #include "sdf_peer.h"
 
 #include <pcl_flowseg/flow_core.h>
@@ -46,12 +47,14 @@ struct Options
   std::set<std::string> models; // empty: all
   bool sdf = true;
   std::string csv;
+  std::string pictures; // folder for PNG pictures of each model's segmentations; empty: none
 };
 
 const char* const kUsage =
   "usage: flowseg_bench_psb [--data DIR (../shared/data/psb_dev)] [--points N (10000)]\n"
   "                         [--rho LIST (1.1,1.2,1.3,1.5)] [--seed S (1)] [--models ID,ID]\n"
-  "                         [--no-sdf] [--csv FILE]\n";
+  "                         [--no-sdf] [--csv FILE] [--pictures DIR]\n"
+  "  --pictures DIR: DIR/<id>_human.png, <id>_flowseg_rho<R>.png, <id>_sdf.png for every model\n";
 
 std::vector<std::string>
 splitList (const std::string& text)
@@ -77,6 +80,8 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
       o.data = argv[++i];
     else if (a == "--csv" && has_value)
       o.csv = argv[++i];
+    else if (a == "--pictures" && has_value)
+      o.pictures = argv[++i];
     else if (a == "--points" && has_value)
     {
       const long n = std::strtol (argv[++i], nullptr, 10);
@@ -271,6 +276,11 @@ evaluateModel (const Model& model, const Options& o)
   const auto areas = pcl_flowseg::faceAreas (mesh);
   r.human = humanAgreement (areas, humans);
   r.one_segment = meanError (areas, std::vector<int> (r.faces, 0), humans);
+  if (!o.pictures.empty ())
+  {
+    fs::create_directories (o.pictures);
+    flowseg_bench::renderSegmentedMesh (mesh, humans.front (), (fs::path (o.pictures) / (model.id + "_human.png")).string ());
+  }
 
   const auto points = pcl_flowseg::sampleMeshSurface (mesh, o.points, 0.0, o.seed);
   for (double rho : o.rhos)
@@ -285,6 +295,12 @@ evaluateModel (const Model& model, const Options& o)
       r.transfer_seconds += secondsSince (start);
       m.score = meanError (areas, labels, humans);
       m.segments = static_cast<double> (distinctLabels (labels));
+      if (!o.pictures.empty ())
+      {
+        char name[64];
+        std::snprintf (name, sizeof (name), "_flowseg_rho%g.png", rho);
+        flowseg_bench::renderSegmentedMesh (mesh, labels, (fs::path (o.pictures) / (model.id + name)).string ());
+      }
     }
     r.flow.push_back (m);
   }
@@ -302,6 +318,8 @@ evaluateModel (const Model& model, const Options& o)
     {
       r.sdf.score = meanError (areas, labels, humans);
       r.sdf.segments = static_cast<double> (distinctLabels (labels));
+      if (!o.pictures.empty ())
+        flowseg_bench::renderSegmentedMesh (mesh, labels, (fs::path (o.pictures) / (model.id + "_sdf.png")).string ());
     }
   }
   return r;
