@@ -33,6 +33,10 @@ INPUT  .pcd | .ply | .xyz/.txt/.csv (x y [z] per line) | .off/.obj (mesh vertice
 
 Options:
   -r, --rho R            merge threshold rho > 0 (default )" << pcl_flowseg::kDefaultRho << R"(); < 1 merges nothing
+      --tolerance T      merge tolerance in local sample spacings >= 0 (default )" << pcl_flowseg::kDefaultSamplingTolerance << R"();
+                         0 with --stump-ratio 0 gives the paper's rule exactly
+      --stump-ratio R    thin parts take back their stumps from parts R times thicker
+                         (default )" << pcl_flowseg::kDefaultStumpRatio << R"(; 0 = off)
   -d, --dimension D      auto | 2 | 3 (default auto: 2D when all points lie on one plane)
   -f, --features SIDE    interior | exterior | both (default interior: the shape's features)
       --significance F   features above this share of the reported volume are marked
@@ -82,6 +86,7 @@ main (int argc, char** argv)
 {
   std::string input, prefix;
   double rho = pcl_flowseg::kDefaultRho;
+  double tolerance = pcl_flowseg::kDefaultSamplingTolerance, stump_ratio = pcl_flowseg::kDefaultStumpRatio;
   int dimension = 0;
   bool binary = false, quiet = false, separate = true, use_normals = false, use_sensor_origin = false, surface = true;
   pcl_flowseg::FeatureSide side = pcl_flowseg::FeatureSide::Interior;
@@ -110,6 +115,16 @@ main (int argc, char** argv)
     {
       if (!value (v) || !flowseg_app::parseNumber (v, rho) || rho <= 0.0)
         return usageError ("--rho needs a finite number > 0, got '" + v + "'");
+    }
+    else if (arg == "--tolerance")
+    {
+      if (!value (v) || !flowseg_app::parseNumber (v, tolerance) || tolerance < 0.0)
+        return usageError ("--tolerance needs a finite number >= 0, got '" + v + "'");
+    }
+    else if (arg == "--stump-ratio")
+    {
+      if (!value (v) || !flowseg_app::parseNumber (v, stump_ratio) || (stump_ratio != 0.0 && stump_ratio < 1.0))
+        return usageError ("--stump-ratio needs 0 (off) or a number >= 1, got '" + v + "'");
     }
     else if (arg == "-d" || arg == "--dimension")
     {
@@ -233,6 +248,8 @@ main (int argc, char** argv)
   pcl::FlowSegmentation<pcl::PointNormal> seg;
   seg.setInputCloud (cloud);
   seg.setRho (rho);
+  seg.setSamplingTolerance (tolerance);
+  seg.setStumpRatio (stump_ratio);
   seg.setDimension (dimension);
   seg.setSeparateInterior (separate);
   seg.setFeatureSide (side);

@@ -65,6 +65,19 @@ buildManifolds (const core::StableManifolds& sm, FlowResult& result)
   result.manifold_adjacency = core::highestSharedFacets (result, manifold_of_cell);
 }
 
+/** Why the merge parameters are unusable, or empty when they are fine. */
+std::string
+mergeParameterProblem (const FlowParameters& params)
+{
+  if (!std::isfinite (params.rho) || params.rho <= 0.0)
+    return "rho must be a finite number > 0, got " + std::to_string (params.rho);
+  if (!std::isfinite (params.sampling_tolerance) || params.sampling_tolerance < 0.0)
+    return "the sampling tolerance must be a finite number >= 0, got " + std::to_string (params.sampling_tolerance);
+  if (!std::isfinite (params.stump_ratio) || (params.stump_ratio != 0.0 && params.stump_ratio < 1.0))
+    return "the stump ratio must be 0 (off) or a finite number >= 1, got " + std::to_string (params.stump_ratio);
+  return std::string ();
+}
+
 Status
 failure (FlowResult& result, const std::string& message)
 {
@@ -97,12 +110,20 @@ availableMemory ()
 Status
 remergeFlowSegmentation (double rho, FlowResult& result)
 {
-  if (!std::isfinite (rho) || rho <= 0.0)
-    return Status::error ("rho must be a finite number > 0, got " + std::to_string (rho));
+  FlowParameters params;
+  params.rho = rho;
+  return remergeFlowSegmentation (params, result);
+}
+
+Status
+remergeFlowSegmentation (const FlowParameters& params, FlowResult& result)
+{
+  if (const std::string problem = mergeParameterProblem (params); !problem.empty ())
+    return Status::error (problem);
   if (result.cells.empty ())
     return Status::error ("no flow segmentation to merge: run runFlowSegmentation first");
   const auto start = Clock::now ();
-  core::mergeManifolds (rho, result);
+  core::mergeManifolds (params, result);
   result.timings.merge_ms = millisecondsSince (start);
   const auto labels = Clock::now ();
   core::labelPoints (result);
@@ -116,8 +137,8 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
 {
   result = FlowResult ();
   result.input_points = points.size ();
-  if (!std::isfinite (params.rho) || params.rho <= 0.0)
-    return failure (result, "rho must be a finite number > 0, got " + std::to_string (params.rho));
+  if (const std::string problem = mergeParameterProblem (params); !problem.empty ())
+    return failure (result, problem);
   if (!std::isfinite (params.planar_tolerance) || params.planar_tolerance < 0.0)
     return failure (result, "planar tolerance must be a finite number >= 0");
   if (!params.normals.empty () && params.normals.size () != points.size ())
@@ -228,7 +249,7 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParam
 
     report ("merge", 0.8);
     stage = Clock::now ();
-    core::mergeManifolds (params.rho, result);
+    core::mergeManifolds (params, result);
     result.timings.merge_ms = millisecondsSince (stage);
 
     report ("labels", 0.9);

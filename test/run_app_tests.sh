@@ -136,6 +136,10 @@ for seed in 1 2 3; do
     mkdir -p "$work/tree/$shape"; cp "$work/gen$seed/$shape.pcd" "$work/tree/$shape/$shape-$seed.pcd"
   done
 done
+expect "segment with the paper's rule" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/paper" --tolerance 0 --stump-ratio 0 --rho 1.3
+expect "segment bad tolerance" 2 "tolerance" -- "$seg" "$src/samples/star2d.pcd" --tolerance -1
+expect "segment bad stump ratio" 2 "stump-ratio" -- "$seg" "$src/samples/star2d.pcd" --stump-ratio 0.5
+expect "segment threads" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/threads" -j 1
 expect "db build" 0 "9 shapes" -- "$db" build "$work/shapes.db" "$work/tree" -j 2
 expect "db list" 0 "snowman3d" -- "$db" list "$work/shapes.db"
 expect "db query finds the class" 0 "^1.*snowman3d" -- "$db" query "$work/shapes.db" "$work/tree/snowman3d/snowman3d-1.pcd" -k 3

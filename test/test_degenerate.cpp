@@ -209,8 +209,29 @@ TEST (Degenerate, AbsurdParametersAreRejected)
     EXPECT_FALSE (s.ok);
     EXPECT_NE (s.message.find ("rho"), std::string::npos);
   }
+  for (double tolerance : {-0.1, std::nan (""), std::numeric_limits<double>::infinity ()})
+  {
+    FlowParameters params;
+    params.sampling_tolerance = tolerance;
+    FlowResult bad;
+    const Status s = runFlowSegmentation (pts, params, bad);
+    EXPECT_FALSE (s.ok);
+    EXPECT_NE (s.message.find ("tolerance"), std::string::npos) << s.message;
+  }
+  for (double ratio : {-1.0, 0.5, std::nan (""), std::numeric_limits<double>::infinity ()})
+  {
+    FlowParameters params;
+    params.stump_ratio = ratio;
+    FlowResult bad;
+    const Status s = runFlowSegmentation (pts, params, bad);
+    EXPECT_FALSE (s.ok);
+    EXPECT_NE (s.message.find ("stump"), std::string::npos) << s.message;
+  }
   FlowResult r = segmentOrDie (pts);
   EXPECT_FALSE (remergeFlowSegmentation (-2.0, r).ok);
+  EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, -1.0), r).ok);
+  EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, std::nan ("")), r).ok);
+  EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, 0.5, 0.9), r).ok);
   FlowResult empty;
   EXPECT_FALSE (remergeFlowSegmentation (1.5, empty).ok);
 }

@@ -12,6 +12,7 @@
 #include <deque>
 #include <functional>
 #include <limits>
+#include <map>
 #include <set>
 
 using namespace pcl_flowseg;
@@ -239,14 +240,38 @@ TEST (Merging, LargerRhoNeverGivesMoreSegmentsAndBelowOneMergesNothing)
       checkPartition (r);
     }
     EXPECT_LT (previous, r.manifolds.size ()) << name << ": large rho merges something";
+    // Nor does a larger sampling tolerance, and below rho 1 no tolerance merges anything.
+    previous = r.manifolds.size ();
+    for (double tolerance : {0.0, 0.1, 0.25, 0.5, 1.0, 2.0, 5.0})
+    {
+      ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.05, tolerance), r).ok);
+      EXPECT_LE (r.segments.size (), previous) << name << " tolerance " << tolerance;
+      previous = r.segments.size ();
+      checkPartition (r);
+    }
+    ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (0.999, 5.0), r).ok);
+    EXPECT_EQ (r.segments.size (), r.manifolds.size ()) << name;
   }
+}
+
+TEST (Merging, RemergeWithTheNewParametersOffEqualsAFreshRunWithThePaperRule)
+{
+  const auto pts = shapeSample ("animal3d", 1500);
+  FlowResult fresh = segmentOrDie (pts, 1.3, DimensionMode::Automatic, true, 0.0, 0.0);
+  FlowResult remerged = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, true);
+  ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.3, 0.0, 0.0), remerged).ok);
+  ASSERT_EQ (remerged.segments.size (), fresh.segments.size ());
+  for (std::size_t c = 0; c < fresh.cells.size (); ++c)
+    ASSERT_EQ (remerged.cells[c].segment, fresh.cells[c].segment) << "cell " << c;
+  EXPECT_EQ (remerged.point_labels, fresh.point_labels);
+  EXPECT_EQ (remerged.features, fresh.features);
 }
 
 TEST (Merging, SegmentsFollowThePaperRule)
 {
   // Independent check of each merge decision from the manifold adjacency: every pair of manifolds
   // that satisfies the rule ends up in one segment, and every segment is connected by such pairs.
-  FlowResult r = segmentOrDie (shapeSample ("star2d", 1000), 1.4);
+  FlowResult r = segmentOrDie (shapeSample ("star2d", 1000), 1.4, DimensionMode::Automatic, false, 0.0, 0.0);
   const double rho2 = 1.4 * 1.4;
   std::vector<int> segment_of_manifold (r.manifolds.size (), -1);
   for (const auto& c : r.cells)
@@ -271,6 +296,147 @@ TEST (Merging, SegmentsFollowThePaperRule)
     for (std::size_t b = a + 1; b < r.manifolds.size (); ++b)
       if (segment_of_manifold[a] == segment_of_manifold[b])
         EXPECT_EQ (find (static_cast<int> (a)), find (static_cast<int> (b)));
+}
+
+TEST (Merging, SegmentsFollowTheRuleWithSamplingTolerance)
+{
+  // The same independent check for R(max) < rho R(t) + tolerance s(t), s(t) = mean distance of the
+  // saddle's vertices to their nearest other vertex, found here by brute force (not from the
+  // triangulation); in 2D and 3D, on the raw segmentation and with interior/exterior sides.
+  struct Case { const char* name; std::size_t points; bool sided; };
+  for (const Case& test : {Case{"star2d", 1000, false}, Case{"animal3d", 1200, false}, Case{"animal3d", 1200, true}})
+  {
+    const double rho = 1.05, tolerance = 0.5;
+    FlowResult r = segmentOrDie (shapeSample (test.name, test.points), rho, DimensionMode::Automatic, test.sided, tolerance, 0.0);
+    std::vector<double> nearest (r.vertices.size (), std::numeric_limits<double>::infinity ());
+    for (std::size_t a = 0; a < r.vertices.size (); ++a)
+      for (std::size_t b = 0; b < r.vertices.size (); ++b)
+        if (a != b)
+          nearest[a] = std::min (nearest[a], (r.vertices[a] - r.vertices[b]).norm ());
+    std::vector<int> segment_of_manifold (r.manifolds.size (), -1);
+    for (const auto& m : r.manifolds)
+      if (!m.flows_to_infinity)
+        segment_of_manifold[static_cast<std::size_t> (&m - r.manifolds.data ())] = r.cells[static_cast<std::size_t> (m.maximum.cell)].segment;
+    std::vector<int> parent (r.manifolds.size ());
+    for (std::size_t k = 0; k < parent.size (); ++k)
+      parent[k] = static_cast<int> (k);
+    std::function<int (int)> find = [&] (int x) { return parent[x] == x ? x : parent[x] = find (parent[x]); };
+    std::size_t by_tolerance_only = 0;
+    for (const auto& s : r.manifold_adjacency)
+    {
+      const auto& a = r.manifolds[static_cast<std::size_t> (s.segment_a)];
+      const auto& b = r.manifolds[static_cast<std::size_t> (s.segment_b)];
+      if (a.flows_to_infinity || b.flows_to_infinity)
+        continue;
+      if (test.sided && r.cells[static_cast<std::size_t> (a.maximum.cell)].inside != r.cells[static_cast<std::size_t> (b.maximum.cell)].inside)
+        continue; // sides never merge
+      double spacing = 0.0;
+      for (int k = 0; k < r.dimension; ++k)
+        spacing += nearest[static_cast<std::size_t> (s.vertices[static_cast<std::size_t> (k)])] / r.dimension;
+      const double limit = rho * std::sqrt (s.squared_radius) + tolerance * spacing;
+      const bool rule = std::sqrt (a.maximum.height) < limit && std::sqrt (b.maximum.height) < limit;
+      const double rho2 = rho * rho;
+      if (rule && !(a.maximum.height < rho2 * s.squared_radius && b.maximum.height < rho2 * s.squared_radius))
+        ++by_tolerance_only;
+      if (rule)
+      {
+        EXPECT_EQ (segment_of_manifold[static_cast<std::size_t> (s.segment_a)], segment_of_manifold[static_cast<std::size_t> (s.segment_b)])
+            << test.name;
+        parent[static_cast<std::size_t> (find (s.segment_a))] = find (s.segment_b);
+      }
+    }
+    EXPECT_GT (by_tolerance_only, 0u) << test.name << ": the tolerance should decide some pairs";
+    for (std::size_t a = 0; a < r.manifolds.size (); ++a)
+      for (std::size_t b = a + 1; b < r.manifolds.size (); ++b)
+        if (segment_of_manifold[a] >= 0 && segment_of_manifold[a] == segment_of_manifold[b])
+          EXPECT_EQ (find (static_cast<int> (a)), find (static_cast<int> (b))) << test.name;
+  }
+}
+
+TEST (Merging, StumpsMoveOnlyThinConnectedCellsFromMuchThickerSegments)
+{
+  // The same merging with and without stumps: the segments keep their maxima, and a cell changes
+  // segment only from Y to X when Y's highest maximum is more than the ratio (2) times thicker
+  // than X's, the cell is no larger than X's highest maximum nor smaller than half the saddle
+  // between them (radii), and it hangs together with X.
+  struct Case { const char* name; std::size_t points; bool sided; };
+  for (const Case& test : {Case{"animal3d", 3000, true}, Case{"hand2d", 1500, true}, Case{"animal3d", 1500, false}})
+  {
+    const auto pts = shapeSample (test.name, test.points);
+    const FlowResult plain = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, test.sided, kDefaultSamplingTolerance, 0.0);
+    const FlowResult stumps = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, test.sided, kDefaultSamplingTolerance, 2.0);
+    const FlowResult far = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, test.sided, kDefaultSamplingTolerance, 1e6);
+    ASSERT_EQ (stumps.segments.size (), plain.segments.size ()) << test.name;
+    // A segment is known by its maximum cell (segments are ordered by volume, which stumps change).
+    std::map<int, int> by_maximum; // maximum cell -> segment in `stumps`
+    for (std::size_t k = 0; k < stumps.segments.size (); ++k)
+      by_maximum[stumps.segments[k].maximum.cell] = static_cast<int> (k);
+    std::vector<int> same (plain.segments.size (), -1); // segment of `plain` -> segment of `stumps`
+    for (std::size_t k = 0; k < plain.segments.size (); ++k)
+    {
+      ASSERT_EQ (by_maximum.count (plain.segments[k].maximum.cell), 1u) << test.name;
+      same[k] = by_maximum[plain.segments[k].maximum.cell];
+      EXPECT_EQ (stumps.segments[static_cast<std::size_t> (same[k])].maxima, plain.segments[k].maxima) << test.name;
+    }
+    std::map<std::pair<int, int>, double> saddle; // segments of `plain` -> squared radius
+    for (const auto& f : plain.segment_adjacency)
+      saddle[{f.segment_a, f.segment_b}] = f.squared_radius;
+    std::vector<int> back (stumps.segments.size (), -1); // segment of `stumps` -> segment of `plain`
+    for (std::size_t k = 0; k < same.size (); ++k)
+      back[static_cast<std::size_t> (same[k])] = static_cast<int> (k);
+    std::size_t moved = 0;
+    std::vector<char> reached (stumps.cells.size (), 0);
+    std::deque<std::size_t> queue;
+    for (std::size_t c = 0; c < plain.cells.size (); ++c)
+    {
+      const int before = same[static_cast<std::size_t> (plain.cells[c].segment)], after = stumps.cells[c].segment;
+      if (before == after)
+      {
+        reached[c] = 1;
+        queue.push_back (c);
+        continue;
+      }
+      ++moved;
+      const FlowSegment& x = stumps.segments[static_cast<std::size_t> (after)];
+      const FlowSegment& y = stumps.segments[static_cast<std::size_t> (before)];
+      ASSERT_FALSE (x.maxima.empty ()) << test.name << " cell " << c;
+      EXPECT_LT (4.0 * x.maximum.height, y.maximum.height) << test.name << " cell " << c;
+      EXPECT_LE (stumps.cells[c].squared_radius, x.maximum.height) << test.name << " cell " << c;
+      const int px = back[static_cast<std::size_t> (after)], py = plain.cells[c].segment;
+      const auto t = saddle.find ({std::min (px, py), std::max (px, py)});
+      ASSERT_NE (t, saddle.end ()) << test.name << ": cell " << c << " moved between segments that do not touch";
+      EXPECT_GE (stumps.cells[c].squared_radius, 0.25 * t->second) << test.name << " cell " << c;
+      EXPECT_EQ (stumps.cells[c].inside, plain.cells[c].inside);
+      for (const FlowMaximum& m : plain.maxima)
+        EXPECT_NE (m.cell, static_cast<int> (c)) << test.name << ": a maximum moved";
+    }
+    // Every moved cell is connected to its new segment's unmoved cells through its moved cells.
+    const int facets = stumps.dimension + 1;
+    while (!queue.empty ())
+    {
+      const std::size_t c = queue.front ();
+      queue.pop_front ();
+      for (int i = 0; i < facets; ++i)
+      {
+        const int nb = stumps.cells[c].neighbors[static_cast<std::size_t> (i)];
+        if (nb >= 0 && !reached[static_cast<std::size_t> (nb)] && stumps.cells[static_cast<std::size_t> (nb)].segment == stumps.cells[c].segment)
+        {
+          reached[static_cast<std::size_t> (nb)] = 1;
+          queue.push_back (static_cast<std::size_t> (nb));
+        }
+      }
+    }
+    for (std::size_t c = 0; c < stumps.cells.size (); ++c)
+      EXPECT_TRUE (reached[c]) << test.name << ": moved cell " << c << " is cut off from its new segment";
+    if (std::string (test.name) == "animal3d")
+      EXPECT_GT (moved, 0u) << test.name << ": the legs and neck of the animal have stumps";
+    if (!test.sided) // with sides a sample may touch no interior cell (then it has no label)
+      checkPartition (stumps);
+    // A ratio no segment pair reaches changes nothing.
+    ASSERT_EQ (far.segments.size (), plain.segments.size ());
+    for (std::size_t c = 0; c < plain.cells.size (); ++c)
+      ASSERT_EQ (far.cells[c].segment, plain.cells[c].segment) << test.name;
+  }
 }
 
 TEST (Merging, AdjacencyHoldsTheHighestSharedFacet)

@@ -65,8 +65,10 @@ TEST (HandChecked, TwoAcuteTrianglesAreTwoMaximaMergedByRho)
 {
   // A rhombus split along its short diagonal: two acute triangles, each holding a maximum,
   // separated by the Gabriel edge (0,-0.5)-(0,0.5) of circumradius 0.5.
+  // The paper's rule: no sampling tolerance (see SamplingToleranceWidensTheRuleBySpacings).
   const std::vector<V> pts = {V (0, -0.5, 0), V (0, 0.5, 0), V (-0.8, 0, 0), V (0.8, 0, 0)};
-  const FlowResult apart = segmentOrDie (pts, 1.0);
+  const auto paper = [&] (double rho) { return segmentOrDie (pts, rho, DimensionMode::Automatic, false, 0.0, 0.0); };
+  const FlowResult apart = paper (1.0);
   ASSERT_EQ (apart.maxima.size (), 2u);
   ASSERT_EQ (apart.segments.size (), 2u);
   ASSERT_EQ (apart.segment_adjacency.size (), 1u);
@@ -75,8 +77,36 @@ TEST (HandChecked, TwoAcuteTrianglesAreTwoMaximaMergedByRho)
   const double R = 1.0 * 0.89 / (4 * 0.4);
   EXPECT_NEAR (apart.maxima[0].height, R * R, 1e-12);
   // Merged exactly when R < rho * 0.5.
-  EXPECT_EQ (segmentOrDie (pts, 0.999 * R / 0.5).segments.size (), 2u);
-  EXPECT_EQ (segmentOrDie (pts, 1.001 * R / 0.5).segments.size (), 1u);
+  EXPECT_EQ (paper (0.999 * R / 0.5).segments.size (), 2u);
+  EXPECT_EQ (paper (1.001 * R / 0.5).segments.size (), 1u);
+}
+
+TEST (HandChecked, SamplingToleranceWidensTheRuleBySpacings)
+{
+  // The rhombus above: maxima of circumradius R = 0.55625 either side of the saddle edge
+  // (0,-0.5)-(0,0.5) of circumradius 0.5. Both saddle vertices have their nearest neighbour at
+  // (+-0.8, 0), at distance sqrt(0.89) (the other saddle vertex lies at 1), so the spacing at the
+  // saddle is s = sqrt(0.89), and the two merge exactly when R < rho 0.5 + tolerance s.
+  const std::vector<V> pts = {V (0, -0.5, 0), V (0, 0.5, 0), V (-0.8, 0, 0), V (0.8, 0, 0)};
+  const double R = 0.89 / 1.6, s = std::sqrt (0.89);
+  const auto run = [&] (double rho, double tolerance) {
+    return segmentOrDie (pts, rho, DimensionMode::Automatic, false, tolerance).segments.size ();
+  };
+  const double at_one = (R - 0.5) / s; // rho 1: the tolerance alone must cover R - 0.5
+  EXPECT_EQ (run (1.0, 0.999 * at_one), 2u);
+  EXPECT_EQ (run (1.0, 1.001 * at_one), 1u);
+  const double at_105 = (R - 1.05 * 0.5) / s; // rho 1.05: the ratio covers part of it
+  EXPECT_EQ (run (1.05, 0.999 * at_105), 2u);
+  EXPECT_EQ (run (1.05, 1.001 * at_105), 1u);
+  // The default tolerance merges them at rho 1 already; rho < 1 merges nothing whatever the tolerance.
+  EXPECT_EQ (run (1.0, kDefaultSamplingTolerance), 1u);
+  EXPECT_EQ (run (0.999, 100.0), 2u);
+  // Scaling the sample scales radii and spacings alike: the same decisions.
+  std::vector<V> big;
+  for (const V& p : pts)
+    big.push_back (1000.0 * p);
+  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 0.999 * at_one).segments.size (), 2u);
+  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 1.001 * at_one).segments.size (), 1u);
 }
 
 TEST (HandChecked, TetrahedronFlowsIntoNeighbourHoldingTheMaximum)

@@ -42,6 +42,8 @@ TYPED_TEST (FlowSegmentationTyped, SegmentsCoverEveryPointOnce)
   typename pcl::FlowSegmentation<TypeParam>::Ptr seg (new pcl::FlowSegmentation<TypeParam>);
   seg->setInputCloud (cloud);
   EXPECT_EQ (seg->getRho (), pcl_flowseg::kDefaultRho);
+  EXPECT_EQ (seg->getSamplingTolerance (), pcl_flowseg::kDefaultSamplingTolerance);
+  EXPECT_EQ (seg->getStumpRatio (), pcl_flowseg::kDefaultStumpRatio);
   EXPECT_TRUE (seg->getSeparateInterior ());
   seg->setSeparateInterior (false); // the raw segmentation covers every point
   std::vector<pcl::PointIndices> segments;
@@ -178,6 +180,10 @@ TEST (FlowSegmentation, ErrorsAreReportedNotThrown)
   EXPECT_FALSE (seg.segment (segments));
   EXPECT_NE (seg.getLastError ().find ("rho"), std::string::npos);
   seg.setRho (1.5);
+  seg.setSamplingTolerance (-0.5);
+  EXPECT_FALSE (seg.segment (segments));
+  EXPECT_NE (seg.getLastError ().find ("tolerance"), std::string::npos) << seg.getLastError ();
+  seg.setSamplingTolerance (0.5);
   seg.setDimension (7);
   EXPECT_FALSE (seg.segment (segments));
   EXPECT_NE (seg.getLastError ().find ("dimension"), std::string::npos);
@@ -198,6 +204,17 @@ TEST (FlowSegmentation, RemergeEqualsAFreshRun)
   ASSERT_TRUE (b.segment (sb));
   ASSERT_TRUE (a.remerge (2.0, sa));
   EXPECT_EQ (a.getRho (), 2.0);
+  ASSERT_EQ (sa.size (), sb.size ());
+  for (std::size_t k = 0; k < sa.size (); ++k)
+    EXPECT_EQ (sa[k].indices, sb[k].indices);
+  // remerge keeps the sampling tolerance and stump ratio that were set (here 0: the paper's rule).
+  a.setSamplingTolerance (0.0);
+  b.setSamplingTolerance (0.0);
+  a.setStumpRatio (0.0);
+  b.setStumpRatio (0.0);
+  b.setRho (1.3);
+  ASSERT_TRUE (b.segment (sb));
+  ASSERT_TRUE (a.remerge (1.3, sa));
   ASSERT_EQ (sa.size (), sb.size ());
   for (std::size_t k = 0; k < sa.size (); ++k)
     EXPECT_EQ (sa[k].indices, sb[k].indices);

@@ -13,8 +13,18 @@
 
 namespace pcl_flowseg {
 
-/** \brief Default merge threshold rho (see FlowParameters::rho). */
-constexpr double kDefaultRho = 1.3;
+/** \brief Default merge threshold rho (see FlowParameters::rho). Chosen with
+  * kDefaultSamplingTolerance on the Princeton Segmentation Benchmark (README, "Segmentation
+  * quality"): the middle of the range of rho and tolerance over which the error is lowest. */
+constexpr double kDefaultRho = 1.05;
+
+/** \brief Default additive merge tolerance, in local sample spacings (see
+  * FlowParameters::sampling_tolerance). */
+constexpr double kDefaultSamplingTolerance = 0.5;
+
+/** \brief Default thickness ratio above which thin parts take back their stumps (see
+  * FlowParameters::stump_ratio). */
+constexpr double kDefaultStumpRatio = 2.0;
 
 /** \brief How the dimension of the flow is chosen. */
 enum class DimensionMode
@@ -37,8 +47,8 @@ struct FlowParameters
 {
   /** Merge threshold rho (dimensionless, > 0). Two stable manifolds that share a facet t are
     * merged when the circumradii of both their maximum cells are below rho times the
-    * circumradius of t (paper, section 4, discrete rule; radii, not squared radii).
-    * Values below 1 merge nothing. Default kDefaultRho. */
+    * circumradius of t (paper, section 4, discrete rule; radii, not squared radii), plus
+    * sampling_tolerance local sample spacings. Values below 1 merge nothing. Default kDefaultRho. */
   double rho = kDefaultRho;
   DimensionMode dimension = DimensionMode::Automatic;
   /** Separate the shape's interior from its exterior (surface/curve reconstruction). Default on;
@@ -66,6 +76,27 @@ struct FlowParameters
     * 0 (default) = all hardware threads, 1 = sequential. The result does not depend on it: cells
     * are put in a canonical order after the triangulation. */
   unsigned threads = 0;
+  /** Additive tolerance of the merge rule, in units of the local sample spacing (dimensionless,
+    * finite, >= 0). Two stable manifolds sharing a facet t merge when the circumradii of both
+    * their maxima are below rho R(t) + sampling_tolerance s(t), where s(t) is the mean distance
+    * from t's vertices to their nearest other sample. Why: heights computed from a sample differ
+    * from those of the sampled surface by up to about the sample spacing, so in parts as thin as
+    * the spacing (walls, plates, fins) maxima and saddles are indistinguishable and the ratio rule
+    * alone cuts them into hundreds of pieces; in parts much thicker than the spacing the term is
+    * negligible. 0 gives the paper's rule exactly. Ignored when rho < 1 (no merging).
+    * Default kDefaultSamplingTolerance (0.5, about the largest distance from a point of a
+    * uniformly sampled surface to its nearest sample, in nearest-neighbour distances). */
+  double sampling_tolerance = kDefaultSamplingTolerance;
+  /** Thin parts take back their stumps (dimensionless ratio of circumradii; 0 = off, else >= 1).
+    * The flow cuts a thin part (finger, leg, ear) off a thick one where the thin part is narrowest;
+    * the stretch from there to the junction widens towards the thick part and flows into it (the
+    * "stump" the paper notes on fingers). After merging, where a segment borders one whose highest
+    * maximum is more than stump_ratio times thicker (circumradius), the cells of the thick segment
+    * connected to the thin one through cells no larger than the thin segment's highest maximum
+    * join the thin segment. Segments are then no longer unions of stable manifolds (maxima stay).
+    * 0 gives the paper's segments. Default kDefaultStumpRatio (2: the thick part's largest ball at
+    * least twice as wide as the thin part's). */
+  double stump_ratio = kDefaultStumpRatio;
 };
 
 /** \brief Progress report: a stage name and the fraction of the whole run done (0..1). */
@@ -98,9 +129,15 @@ runFlowSegmentation (const std::vector<Eigen::Vector3d>& points,
                      FlowResult& result,
                      const ProgressCallback& progress = ProgressCallback ());
 
-/** \brief Re-runs only the merging stage of an existing result with another rho.
-  * Cheap compared to runFlowSegmentation: the triangulation and flow are kept. */
+/** \brief Re-runs only the merging stage of an existing result with another rho (the other
+  * merge parameters at their defaults). Cheap compared to runFlowSegmentation: the
+  * triangulation and flow are kept. */
 Status
 remergeFlowSegmentation (double rho, FlowResult& result);
+
+/** \brief Re-runs only the merging stage with the merge parameters of \a params (rho,
+  * sampling_tolerance, stump_ratio; the others are ignored). */
+Status
+remergeFlowSegmentation (const FlowParameters& params, FlowResult& result);
 
 } // namespace pcl_flowseg

@@ -57,10 +57,30 @@ public:
 
   /** \brief Merge threshold rho (dimensionless, finite, > 0; default pcl_flowseg::kDefaultRho).
     * Two stable manifolds sharing a facet t merge when both their maximum cells have a
-    * circumradius below rho times the circumradius of t. Below 1 nothing merges; larger values
-    * merge more (never giving more segments). */
+    * circumradius below rho times the circumradius of t plus the sampling tolerance (see
+    * setSamplingTolerance). Below 1 nothing merges; larger values merge more (never giving more
+    * segments). */
   inline void setRho (double rho) { params_.rho = rho; }
   inline double getRho () const { return params_.rho; }
+
+  /** \brief Additive tolerance of the merge rule, in local sample spacings (finite, >= 0;
+    * default pcl_flowseg::kDefaultSamplingTolerance = 0.5). Two stable manifolds sharing a facet
+    * t merge when both their maxima have a circumradius below rho R(t) + tolerance s(t), s(t)
+    * being the mean nearest-neighbour distance of t's vertices: heights measured on a sample
+    * carry an error of about the sample spacing, which in parts as thin as the spacing (walls,
+    * plates) is as large as the differences the ratio rho tests. 0 gives the paper's rule
+    * exactly; ignored when rho < 1. */
+  inline void setSamplingTolerance (double tolerance) { params_.sampling_tolerance = tolerance; }
+  inline double getSamplingTolerance () const { return params_.sampling_tolerance; }
+
+  /** \brief Thin parts take back their stumps (ratio of circumradii: 0 = off, else >= 1; default
+    * pcl_flowseg::kDefaultStumpRatio = 2). The flow cuts a finger or leg off the body where it is
+    * narrowest, leaving the stretch from there to the body (the stump) with the body. Where a
+    * segment borders one whose highest maximum is more than this ratio thicker, the thick
+    * segment's cells connected to the thin one through cells no larger than the thin one's
+    * highest maximum join the thin one. 0 gives the paper's segments. */
+  inline void setStumpRatio (double ratio) { params_.stump_ratio = ratio; }
+  inline double getStumpRatio () const { return params_.stump_ratio; }
 
   /** \brief 0 = automatic (default: 2D when all points lie on one plane), 2 or 3 to force. */
   inline void
@@ -118,8 +138,9 @@ public:
     * \return false on bad input or parameters; getLastError() says why, segments is empty. */
   bool segment (std::vector<PointIndices>& segments);
 
-  /** \brief Re-runs only the merging with another rho (keeps triangulation and flow).
-    * \return false when segment() has not succeeded before or rho is invalid. */
+  /** \brief Re-runs only the merging with another rho (keeps triangulation and flow; the
+    * sampling tolerance and stump ratio are the ones set).
+    * \return false when segment() has not succeeded before or rho or the tolerance is invalid. */
   bool remerge (double rho, std::vector<PointIndices>& segments);
 
   /** \brief One PointXYZL per point of the input cloud, in input order: label = index into the

@@ -66,7 +66,11 @@ template <typename PointT> bool
 FlowSegmentation<PointT>::remerge (double rho, std::vector<PointIndices>& segments)
 {
   segments.clear ();
-  const pcl_flowseg::Status status = pcl_flowseg::remergeFlowSegmentation (rho, result_);
+  pcl_flowseg::FlowParameters merge; // the merge parameters only (not the normals)
+  merge.rho = rho;
+  merge.sampling_tolerance = params_.sampling_tolerance;
+  merge.stump_ratio = params_.stump_ratio;
+  const pcl_flowseg::Status status = pcl_flowseg::remergeFlowSegmentation (merge, result_);
   if (!status.ok)
   {
     last_error_ = status.message;
