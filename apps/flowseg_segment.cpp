@@ -34,9 +34,14 @@ INPUT  .pcd | .ply | .xyz/.txt/.csv (x y [z] per line) | .off/.obj (mesh vertice
 Options:
   -r, --rho R            merge threshold rho > 0 (default )" << pcl_flowseg::kDefaultRho << R"(); < 1 merges nothing
       --tolerance T      merge tolerance in local sample spacings >= 0 (default )" << pcl_flowseg::kDefaultSamplingTolerance << R"();
-                         0 with --stump-ratio 0 gives the paper's rule exactly
       --stump-ratio R    thin parts take back their stumps from parts R times thicker
                          (default )" << pcl_flowseg::kDefaultStumpRatio << R"(; 0 = off)
+      --compact-rho R    merge threshold for compact segments, > 0 (default )" << pcl_flowseg::kDefaultCompactRho << R"(;
+                         acts only above rho)
+      --compact-size S   largest compact segment, in balls of its saddle's radius, >= 0
+                         (default )" << pcl_flowseg::kDefaultCompactSize << R"(; 0 = off)
+      --paper-rule       the paper's merging rule alone: tolerance, stump ratio and compact
+                         size 0
   -d, --dimension D      auto | 2 | 3 (default auto: 2D when all points lie on one plane)
   -f, --features SIDE    interior | exterior | both (default interior: the shape's features)
       --significance F   features above this share of the reported volume are marked
@@ -87,6 +92,7 @@ main (int argc, char** argv)
   std::string input, prefix;
   double rho = pcl_flowseg::kDefaultRho;
   double tolerance = pcl_flowseg::kDefaultSamplingTolerance, stump_ratio = pcl_flowseg::kDefaultStumpRatio;
+  double compact_rho = pcl_flowseg::kDefaultCompactRho, compact_size = pcl_flowseg::kDefaultCompactSize;
   int dimension = 0;
   bool binary = false, quiet = false, separate = true, use_normals = false, use_sensor_origin = false, surface = true;
   pcl_flowseg::FeatureSide side = pcl_flowseg::FeatureSide::Interior;
@@ -126,6 +132,18 @@ main (int argc, char** argv)
       if (!value (v) || !flowseg_app::parseNumber (v, stump_ratio) || (stump_ratio != 0.0 && stump_ratio < 1.0))
         return usageError ("--stump-ratio needs 0 (off) or a number >= 1, got '" + v + "'");
     }
+    else if (arg == "--compact-rho")
+    {
+      if (!value (v) || !flowseg_app::parseNumber (v, compact_rho) || compact_rho <= 0.0)
+        return usageError ("--compact-rho needs a finite number > 0, got '" + v + "'");
+    }
+    else if (arg == "--compact-size")
+    {
+      if (!value (v) || !flowseg_app::parseNumber (v, compact_size) || compact_size < 0.0)
+        return usageError ("--compact-size needs a finite number >= 0, got '" + v + "'");
+    }
+    else if (arg == "--paper-rule")
+      tolerance = stump_ratio = compact_size = 0.0;
     else if (arg == "-d" || arg == "--dimension")
     {
       if (!value (v))
@@ -250,6 +268,8 @@ main (int argc, char** argv)
   seg.setRho (rho);
   seg.setSamplingTolerance (tolerance);
   seg.setStumpRatio (stump_ratio);
+  seg.setCompactRho (compact_rho);
+  seg.setCompactSize (compact_size);
   seg.setDimension (dimension);
   seg.setSeparateInterior (separate);
   seg.setFeatureSide (side);

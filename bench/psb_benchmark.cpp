@@ -48,12 +48,16 @@ struct Options
   bool sdf = true;
   std::string csv;
   std::string pictures; // folder for PNG pictures of each model's segmentations; empty: none
+  pcl_flowseg::FlowParameters flow; // every flowseg run; rho is set per run from \a rhos
 };
 
 const char* const kUsage =
   "usage: flowseg_bench_psb [--data DIR (../shared/data/psb_dev)] [--points N (10000)]\n"
   "                         [--rho LIST (1.1,1.2,1.3,1.5)] [--seed S (1)] [--models ID,ID]\n"
   "                         [--no-sdf] [--csv FILE] [--pictures DIR]\n"
+  "                         [--tolerance T] [--stump-ratio S] [--compact-rho R] [--compact-size S]\n"
+  "                         [--paper-rule]   (merge parameters: the library's defaults unless given)\n"
+  "  --paper-rule: the paper's merging rule alone (tolerance, stump ratio, compact size 0)\n"
   "  --pictures DIR: DIR/<id>_human.png, <id>_flowseg_rho<R>.png, <id>_sdf.png for every model\n";
 
 std::vector<std::string>
@@ -89,6 +93,19 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
         return error = "--points needs a number >= 4", false;
       o.points = static_cast<std::size_t> (n);
     }
+    else if ((a == "--tolerance" || a == "--stump-ratio" || a == "--compact-rho" || a == "--compact-size") && has_value)
+    {
+      char* end = nullptr;
+      const double v = std::strtod (argv[++i], &end);
+      if (*end || !std::isfinite (v) || v < 0)
+        return error = a + " needs a finite number >= 0", false;
+      (a == "--tolerance"     ? o.flow.sampling_tolerance
+       : a == "--stump-ratio" ? o.flow.stump_ratio
+       : a == "--compact-rho" ? o.flow.compact_rho
+                              : o.flow.compact_size) = v;
+    }
+    else if (a == "--paper-rule")
+      o.flow.sampling_tolerance = o.flow.stump_ratio = o.flow.compact_size = 0.0;
     else if (a == "--seed" && has_value)
       o.seed = static_cast<std::uint32_t> (std::strtoul (argv[++i], nullptr, 10));
     else if (a == "--models" && has_value)
@@ -239,12 +256,12 @@ readHumanSegmentations (const fs::path& dir, std::size_t faces, std::vector<std:
   return Status::success ();
 }
 
-/** Segments \a points at \a rho (default parameters otherwise) into \a result, timed. */
+/** Segments \a points at \a rho (the options' parameters otherwise) into \a result, timed. */
 MethodResult
-runFlow (const std::vector<Eigen::Vector3d>& points, double rho, pcl_flowseg::FlowResult& result)
+runFlow (const std::vector<Eigen::Vector3d>& points, double rho, const Options& o, pcl_flowseg::FlowResult& result)
 {
   MethodResult m;
-  pcl_flowseg::FlowParameters params;
+  pcl_flowseg::FlowParameters params = o.flow;
   params.rho = rho;
   const auto start = std::chrono::steady_clock::now ();
   const Status st = pcl_flowseg::runFlowSegmentation (points, params, result);
@@ -287,7 +304,7 @@ evaluateModel (const Model& model, const Options& o)
   {
     std::fprintf (stderr, "  model %s: flowseg rho %g\n", model.id.c_str (), rho);
     pcl_flowseg::FlowResult result;
-    MethodResult m = runFlow (points, rho, result);
+    MethodResult m = runFlow (points, rho, o, result);
     if (m.error.empty ())
     {
       const auto start = std::chrono::steady_clock::now ();
@@ -348,7 +365,7 @@ evaluateGenerated (const pcl_flowseg::BlobShape& shape, const Options& o)
   for (double rho : o.rhos)
   {
     pcl_flowseg::FlowResult result;
-    MethodResult m = runFlow (points, rho, result);
+    MethodResult m = runFlow (points, rho, o, result);
     if (m.error.empty ())
     {
       std::vector<int> labels;
@@ -580,6 +597,8 @@ main (int argc, char** argv)
   std::printf ("PSB: %zu models from %s, %zu points per model, seed %u, rho", models.size (), o.data.c_str (), o.points, o.seed);
   for (double rho : o.rhos)
     std::printf (" %g", rho);
+  std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g", o.flow.sampling_tolerance,
+               o.flow.stump_ratio, o.flow.compact_rho, o.flow.compact_size);
   std::printf ("; errors: area-weighted Rand-index error, mean over the model's human segmentations\n\n");
   std::vector<ModelResult> results;
   for (std::size_t i = 0; i < models.size (); ++i)

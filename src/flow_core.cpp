@@ -75,6 +75,10 @@ mergeParameterProblem (const FlowParameters& params)
     return "the sampling tolerance must be a finite number >= 0, got " + std::to_string (params.sampling_tolerance);
   if (!std::isfinite (params.stump_ratio) || (params.stump_ratio != 0.0 && params.stump_ratio < 1.0))
     return "the stump ratio must be 0 (off) or a finite number >= 1, got " + std::to_string (params.stump_ratio);
+  if (!std::isfinite (params.compact_rho) || params.compact_rho <= 0.0)
+    return "the compact rho must be a finite number > 0, got " + std::to_string (params.compact_rho);
+  if (!std::isfinite (params.compact_size) || params.compact_size < 0.0)
+    return "the compact size must be a finite number >= 0, got " + std::to_string (params.compact_size);
   return std::string ();
 }
 

@@ -136,7 +136,11 @@ for seed in 1 2 3; do
     mkdir -p "$work/tree/$shape"; cp "$work/gen$seed/$shape.pcd" "$work/tree/$shape/$shape-$seed.pcd"
   done
 done
-expect "segment with the paper's rule" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/paper" --tolerance 0 --stump-ratio 0 --rho 1.3
+expect "segment with the paper's rule" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/paper" --paper-rule --rho 1.3
+expect "segment with the paper's rule, spelt out" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/paper2" --tolerance 0 --stump-ratio 0 --compact-size 0 --rho 1.3
+cmp -s "$work/paper.labels.pcd" "$work/paper2.labels.pcd"; check "--paper-rule is tolerance, stump ratio and compact size 0 (same labels)" $?
+expect "segment bad compact size" 2 "compact-size" -- "$seg" "$src/samples/star2d.pcd" --compact-size -1
+expect "segment bad compact rho" 2 "compact-rho" -- "$seg" "$src/samples/star2d.pcd" --compact-rho 0
 expect "segment bad tolerance" 2 "tolerance" -- "$seg" "$src/samples/star2d.pcd" --tolerance -1
 expect "segment bad stump ratio" 2 "stump-ratio" -- "$seg" "$src/samples/star2d.pcd" --stump-ratio 0.5
 expect "segment threads" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/threads" -j 1

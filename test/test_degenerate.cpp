@@ -227,11 +227,22 @@ TEST (Degenerate, AbsurdParametersAreRejected)
     EXPECT_FALSE (s.ok);
     EXPECT_NE (s.message.find ("stump"), std::string::npos) << s.message;
   }
+  for (double value : {-1.0, std::nan (""), std::numeric_limits<double>::infinity ()})
+    for (bool size : {false, true})
+    {
+      FlowParameters params;
+      (size ? params.compact_size : params.compact_rho) = value;
+      FlowResult bad;
+      const Status s = runFlowSegmentation (pts, params, bad);
+      EXPECT_FALSE (s.ok);
+      EXPECT_NE (s.message.find (size ? "compact size" : "compact rho"), std::string::npos) << s.message;
+    }
   FlowResult r = segmentOrDie (pts);
   EXPECT_FALSE (remergeFlowSegmentation (-2.0, r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, -1.0), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, std::nan ("")), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, 0.5, 0.9), r).ok);
+  EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, 0.5, 2.0, -0.5), r).ok);
   FlowResult empty;
   EXPECT_FALSE (remergeFlowSegmentation (1.5, empty).ok);
 }

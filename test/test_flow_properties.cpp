@@ -257,9 +257,9 @@ TEST (Merging, LargerRhoNeverGivesMoreSegmentsAndBelowOneMergesNothing)
 TEST (Merging, RemergeWithTheNewParametersOffEqualsAFreshRunWithThePaperRule)
 {
   const auto pts = shapeSample ("animal3d", 1500);
-  FlowResult fresh = segmentOrDie (pts, 1.3, DimensionMode::Automatic, true, 0.0, 0.0);
+  FlowResult fresh = segmentOrDie (pts, 1.3, DimensionMode::Automatic, true, 0.0, 0.0, 0.0);
   FlowResult remerged = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, true);
-  ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.3, 0.0, 0.0), remerged).ok);
+  ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.3, 0.0, 0.0, 0.0), remerged).ok);
   ASSERT_EQ (remerged.segments.size (), fresh.segments.size ());
   for (std::size_t c = 0; c < fresh.cells.size (); ++c)
     ASSERT_EQ (remerged.cells[c].segment, fresh.cells[c].segment) << "cell " << c;
@@ -271,7 +271,7 @@ TEST (Merging, SegmentsFollowThePaperRule)
 {
   // Independent check of each merge decision from the manifold adjacency: every pair of manifolds
   // that satisfies the rule ends up in one segment, and every segment is connected by such pairs.
-  FlowResult r = segmentOrDie (shapeSample ("star2d", 1000), 1.4, DimensionMode::Automatic, false, 0.0, 0.0);
+  FlowResult r = segmentOrDie (shapeSample ("star2d", 1000), 1.4, DimensionMode::Automatic, false, 0.0, 0.0, 0.0);
   const double rho2 = 1.4 * 1.4;
   std::vector<int> segment_of_manifold (r.manifolds.size (), -1);
   for (const auto& c : r.cells)
@@ -307,7 +307,7 @@ TEST (Merging, SegmentsFollowTheRuleWithSamplingTolerance)
   for (const Case& test : {Case{"star2d", 1000, false}, Case{"animal3d", 1200, false}, Case{"animal3d", 1200, true}})
   {
     const double rho = 1.05, tolerance = 0.5;
-    FlowResult r = segmentOrDie (shapeSample (test.name, test.points), rho, DimensionMode::Automatic, test.sided, tolerance, 0.0);
+    FlowResult r = segmentOrDie (shapeSample (test.name, test.points), rho, DimensionMode::Automatic, test.sided, tolerance, 0.0, 0.0);
     std::vector<double> nearest (r.vertices.size (), std::numeric_limits<double>::infinity ());
     for (std::size_t a = 0; a < r.vertices.size (); ++a)
       for (std::size_t b = 0; b < r.vertices.size (); ++b)

@@ -67,7 +67,7 @@ TEST (HandChecked, TwoAcuteTrianglesAreTwoMaximaMergedByRho)
   // separated by the Gabriel edge (0,-0.5)-(0,0.5) of circumradius 0.5.
   // The paper's rule: no sampling tolerance (see SamplingToleranceWidensTheRuleBySpacings).
   const std::vector<V> pts = {V (0, -0.5, 0), V (0, 0.5, 0), V (-0.8, 0, 0), V (0.8, 0, 0)};
-  const auto paper = [&] (double rho) { return segmentOrDie (pts, rho, DimensionMode::Automatic, false, 0.0, 0.0); };
+  const auto paper = [&] (double rho) { return segmentOrDie (pts, rho, DimensionMode::Automatic, false, 0.0, 0.0, 0.0); };
   const FlowResult apart = paper (1.0);
   ASSERT_EQ (apart.maxima.size (), 2u);
   ASSERT_EQ (apart.segments.size (), 2u);
@@ -90,7 +90,7 @@ TEST (HandChecked, SamplingToleranceWidensTheRuleBySpacings)
   const std::vector<V> pts = {V (0, -0.5, 0), V (0, 0.5, 0), V (-0.8, 0, 0), V (0.8, 0, 0)};
   const double R = 0.89 / 1.6, s = std::sqrt (0.89);
   const auto run = [&] (double rho, double tolerance) {
-    return segmentOrDie (pts, rho, DimensionMode::Automatic, false, tolerance).segments.size ();
+    return segmentOrDie (pts, rho, DimensionMode::Automatic, false, tolerance, kDefaultStumpRatio, 0.0).segments.size ();
   };
   const double at_one = (R - 0.5) / s; // rho 1: the tolerance alone must cover R - 0.5
   EXPECT_EQ (run (1.0, 0.999 * at_one), 2u);
@@ -105,8 +105,49 @@ TEST (HandChecked, SamplingToleranceWidensTheRuleBySpacings)
   std::vector<V> big;
   for (const V& p : pts)
     big.push_back (1000.0 * p);
-  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 0.999 * at_one).segments.size (), 2u);
-  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 1.001 * at_one).segments.size (), 1u);
+  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 0.999 * at_one, kDefaultStumpRatio, 0.0).segments.size (), 2u);
+  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 1.001 * at_one, kDefaultStumpRatio, 0.0).segments.size (), 1u);
+}
+
+TEST (HandChecked, CompactPassMergesSegmentsNoBiggerThanBallsOfTheirSaddle)
+{
+  // The rhombus above: two triangles of area 0.4 with maxima of circumradius R = 0.55625 either
+  // side of the saddle edge of circumradius 0.5 (ratio 1.1125). With rho 1 and no tolerance the
+  // ratio rule keeps them apart; the compact pass merges them exactly when the ratio is below
+  // compact_rho and the smaller area (0.4) is at most compact_size discs of radius 0.5.
+  const std::vector<V> pts = {V (0, -0.5, 0), V (0, 0.5, 0), V (-0.8, 0, 0), V (0.8, 0, 0)};
+  const double R = 0.89 / 1.6, disc = 3.14159265358979323846 * 0.25, at_size = 0.4 / disc;
+  const auto run = [&] (const std::vector<V>& sample, double compact_rho, double compact_size) {
+    FlowParameters params;
+    params.rho = 1.0;
+    params.sampling_tolerance = 0.0;
+    params.stump_ratio = 0.0;
+    params.separate_interior = false;
+    params.compact_rho = compact_rho;
+    params.compact_size = compact_size;
+    FlowResult result;
+    EXPECT_TRUE (runFlowSegmentation (sample, params, result).ok);
+    return result.segments.size ();
+  };
+  EXPECT_EQ (run (pts, 1.001 * R / 0.5, 0.999 * at_size), 2u); // too big for a compact segment
+  EXPECT_EQ (run (pts, 1.001 * R / 0.5, 1.001 * at_size), 1u);
+  EXPECT_EQ (run (pts, 0.999 * R / 0.5, 1.001 * at_size), 2u); // too deep for compact_rho
+  EXPECT_EQ (run (pts, 2.0, 0.0), 2u);                          // compact size 0: off
+  // Scale invariant: areas and disc areas scale alike.
+  std::vector<V> big;
+  for (const V& p : pts)
+    big.push_back (1000.0 * p);
+  EXPECT_EQ (run (big, 1.001 * R / 0.5, 0.999 * at_size), 2u);
+  EXPECT_EQ (run (big, 1.001 * R / 0.5, 1.001 * at_size), 1u);
+  // rho < 1 merges nothing, whatever the compact pass.
+  FlowParameters none;
+  none.rho = 0.999;
+  none.separate_interior = false;
+  none.compact_rho = 10.0;
+  none.compact_size = 100.0;
+  FlowResult result;
+  ASSERT_TRUE (runFlowSegmentation (pts, none, result).ok);
+  EXPECT_EQ (result.segments.size (), 2u);
 }
 
 TEST (HandChecked, TetrahedronFlowsIntoNeighbourHoldingTheMaximum)

@@ -39,18 +39,20 @@ randomPoints (std::size_t count, int dimension, std::uint32_t seed)
 
 /** Runs the core and fails the calling test when it does not succeed. By default the paper's raw
   * segmentation of the whole convex hull (no interior/exterior separation): the structural
-  * tests check the flow itself. The merging has the default sampling tolerance and stump ratio
-  * unless given (both 0: the paper's segments exactly). */
+  * tests check the flow itself. The merging has the default sampling tolerance, stump ratio and
+  * compact size unless given (all 0: the paper's segments exactly). */
 inline pcl_flowseg::FlowResult
 segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = pcl_flowseg::kDefaultRho,
               pcl_flowseg::DimensionMode mode = pcl_flowseg::DimensionMode::Automatic, bool separate_interior = false,
               double sampling_tolerance = pcl_flowseg::kDefaultSamplingTolerance,
-              double stump_ratio = pcl_flowseg::kDefaultStumpRatio)
+              double stump_ratio = pcl_flowseg::kDefaultStumpRatio,
+              double compact_size = pcl_flowseg::kDefaultCompactSize)
 {
   pcl_flowseg::FlowParameters params;
   params.rho = rho;
   params.sampling_tolerance = sampling_tolerance;
   params.stump_ratio = stump_ratio;
+  params.compact_size = compact_size;
   params.dimension = mode;
   params.separate_interior = separate_interior;
   pcl_flowseg::FlowResult result;
@@ -65,12 +67,14 @@ segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = pcl_flowseg:
 /** Merge parameters for remergeFlowSegmentation. */
 inline pcl_flowseg::FlowParameters
 mergeParameters (double rho, double sampling_tolerance = pcl_flowseg::kDefaultSamplingTolerance,
-                 double stump_ratio = pcl_flowseg::kDefaultStumpRatio)
+                 double stump_ratio = pcl_flowseg::kDefaultStumpRatio,
+                 double compact_size = pcl_flowseg::kDefaultCompactSize)
 {
   pcl_flowseg::FlowParameters params;
   params.rho = rho;
   params.sampling_tolerance = sampling_tolerance;
   params.stump_ratio = stump_ratio;
+  params.compact_size = compact_size;
   return params;
 }
 

@@ -26,6 +26,13 @@ constexpr double kDefaultSamplingTolerance = 0.5;
   * FlowParameters::stump_ratio). */
 constexpr double kDefaultStumpRatio = 2.0;
 
+/** \brief Default merge threshold for compact segments (see FlowParameters::compact_rho). */
+constexpr double kDefaultCompactRho = 1.2;
+
+/** \brief Default size, in balls of the saddle's radius, below which a segment counts as compact
+  * (see FlowParameters::compact_size). */
+constexpr double kDefaultCompactSize = 2.5;
+
 /** \brief How the dimension of the flow is chosen. */
 enum class DimensionMode
 {
@@ -97,6 +104,20 @@ struct FlowParameters
     * 0 gives the paper's segments. Default kDefaultStumpRatio (2: the thick part's largest ball at
     * least twice as wide as the thin part's). */
   double stump_ratio = kDefaultStumpRatio;
+  /** Merge threshold for compact segments (dimensionless, finite, > 0; effective only when above
+    * rho). After the rule at rho, two segments whose saddle t passes the same rule with
+    * compact_rho in place of rho merge when the smaller of the two holds no more volume (area in
+    * 2D) than compact_size balls (discs) of radius R(t); saddles are taken from the shallowest.
+    * Why: a shallow bump that is no bigger than a couple of balls of its neck (a bulge of a
+    * body, a knuckle, a boss on a machined part) is not a part people name, whereas a protrusion
+    * that runs far beyond a neck of the same depth (a plier handle, a finger) is. Height ratios
+    * alone cannot tell them apart (both near 1.1 on the PSB's fish and pliers). Default
+    * kDefaultCompactRho. */
+  double compact_rho = kDefaultCompactRho;
+  /** Largest compact segment, in balls (2D: discs) of the saddle's radius (dimensionless,
+    * finite, >= 0; 0 = no compact merging, the paper's rule with sampling_tolerance and
+    * stump_ratio 0). Default kDefaultCompactSize. */
+  double compact_size = kDefaultCompactSize;
 };
 
 /** \brief Progress report: a stage name and the fraction of the whole run done (0..1). */
@@ -136,7 +157,7 @@ Status
 remergeFlowSegmentation (double rho, FlowResult& result);
 
 /** \brief Re-runs only the merging stage with the merge parameters of \a params (rho,
-  * sampling_tolerance, stump_ratio; the others are ignored). */
+  * sampling_tolerance, stump_ratio, compact_rho, compact_size; the others are ignored). */
 Status
 remergeFlowSegmentation (const FlowParameters& params, FlowResult& result);
 

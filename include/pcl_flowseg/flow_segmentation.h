@@ -82,6 +82,21 @@ public:
   inline void setStumpRatio (double ratio) { params_.stump_ratio = ratio; }
   inline double getStumpRatio () const { return params_.stump_ratio; }
 
+  /** \brief Merge threshold for compact segments (dimensionless, finite, > 0; default
+    * pcl_flowseg::kDefaultCompactRho = 1.2; acts only when above rho). After merging at rho, two
+    * segments whose saddle passes the rule at this threshold merge when the smaller holds no
+    * more than setCompactSize balls of the saddle's radius: a shallow bulge no bigger than its
+    * neck is not a part, a protrusion that runs far beyond a neck of the same depth (a handle,
+    * a finger) is. */
+  inline void setCompactRho (double rho) { params_.compact_rho = rho; }
+  inline double getCompactRho () const { return params_.compact_rho; }
+
+  /** \brief Largest compact segment, in balls (2D: discs) of the saddle's radius (finite, >= 0;
+    * default pcl_flowseg::kDefaultCompactSize = 2.5; 0 = off). With sampling tolerance, stump
+    * ratio and compact size 0 the segments are the paper's. */
+  inline void setCompactSize (double size) { params_.compact_size = size; }
+  inline double getCompactSize () const { return params_.compact_size; }
+
   /** \brief 0 = automatic (default: 2D when all points lie on one plane), 2 or 3 to force. */
   inline void
   setDimension (int dimension)
@@ -139,7 +154,7 @@ public:
   bool segment (std::vector<PointIndices>& segments);
 
   /** \brief Re-runs only the merging with another rho (keeps triangulation and flow; the
-    * sampling tolerance and stump ratio are the ones set).
+    * sampling tolerance, stump ratio, compact rho and compact size are the ones set).
     * \return false when segment() has not succeeded before or rho or the tolerance is invalid. */
   bool remerge (double rho, std::vector<PointIndices>& segments);
 

@@ -198,6 +198,46 @@ reclaimStumps (const FlowResult& result, const std::vector<double>& height, doub
     }
   }
 }
+/** Volume (area in 2D) of the ball (disc) of squared radius \a r2 in \a dimension. */
+double
+ballVolume (double r2, int dimension)
+{
+  constexpr double kPi = 3.14159265358979323846;
+  return dimension == 3 ? 4.0 / 3.0 * kPi * r2 * std::sqrt (r2) : kPi * r2;
+}
+
+/** The compact pass of mergeManifolds: \a candidates (saddles that pass the merge rule at
+  * compact_rho, not at rho) are visited from the shallowest (lowest ratio of the higher maximum
+  * to the saddle) on; the two groups of \a parent they join merge when the smaller holds no more
+  * than \a size balls of the saddle's radius. Ties keep the adjacency order, so the result is
+  * deterministic. */
+void
+mergeCompactGroups (const FlowResult& result, std::vector<const SaddleFacet*>& candidates, double size,
+                    std::vector<int>& parent)
+{
+  std::vector<double> volume (parent.size (), 0.0);
+  for (std::size_t k = 0; k < parent.size (); ++k)
+    volume[static_cast<std::size_t> (findRoot (parent, static_cast<int> (k)))] += result.manifolds[k].volume;
+  auto depth = [&] (const SaddleFacet* s) {
+    return std::max (result.manifolds[static_cast<std::size_t> (s->segment_a)].maximum.height,
+                     result.manifolds[static_cast<std::size_t> (s->segment_b)].maximum.height) /
+           s->squared_radius;
+  };
+  std::stable_sort (candidates.begin (), candidates.end (),
+                    [&] (const SaddleFacet* x, const SaddleFacet* y) { return depth (x) < depth (y); });
+  for (const SaddleFacet* s : candidates)
+  {
+    const int ra = findRoot (parent, s->segment_a), rb = findRoot (parent, s->segment_b);
+    if (ra == rb)
+      continue;
+    const std::size_t lo = static_cast<std::size_t> (std::min (ra, rb)), hi = static_cast<std::size_t> (std::max (ra, rb));
+    if (std::min (volume[lo], volume[hi]) <= size * ballVolume (s->squared_radius, result.dimension))
+    {
+      parent[hi] = static_cast<int> (lo);
+      volume[lo] += volume[hi];
+    }
+  }
+}
 } // namespace
 
 std::vector<double>
@@ -231,6 +271,7 @@ void
 mergeManifolds (const FlowParameters& params, FlowResult& result)
 {
   const double rho = params.rho, sampling_tolerance = params.sampling_tolerance, stump_ratio = params.stump_ratio;
+  const double compact_rho = params.compact_rho, compact_size = params.compact_size;
   const bool sided = result.interior.computed;
   const int m = static_cast<int> (result.manifolds.size ());
   // Side of a manifold: the side of its maximum (the maximum at infinity is outside).
@@ -246,9 +287,12 @@ mergeManifolds (const FlowParameters& params, FlowResult& result)
   std::vector<int> parent (static_cast<std::size_t> (m));
   std::iota (parent.begin (), parent.end (), 0);
   const double rho2 = rho * rho;
-  // rho < 1 merges nothing, whatever the tolerance (the paper's "no merging", Figure 6).
+  // rho < 1 merges nothing, whatever the tolerance or compact pass (the paper's "no merging", Figure 6).
   const bool tolerant = sampling_tolerance > 0.0 && rho >= 1.0;
   const std::vector<double> nearest = tolerant ? nearestNeighbourDistances (result) : std::vector<double> ();
+  // The compact pass (see the header): saddles that fail the rule at rho but pass it at compact_rho.
+  const bool compact = compact_size > 0.0 && compact_rho > rho && rho >= 1.0;
+  std::vector<const SaddleFacet*> compact_candidates;
   for (const SaddleFacet& s : result.manifold_adjacency)
   {
     const FlowSegment& a = result.manifolds[static_cast<std::size_t> (s.segment_a)];
@@ -257,9 +301,10 @@ mergeManifolds (const FlowParameters& params, FlowResult& result)
         side[static_cast<std::size_t> (s.segment_a)] != side[static_cast<std::size_t> (s.segment_b)])
       continue;
     bool mergeable;
+    const double spacing = tolerant ? sampling_tolerance * saddleSpacing (s, nearest, result.dimension) : 0.0;
     if (tolerant)
     {
-      const double limit = rho * std::sqrt (s.squared_radius) + sampling_tolerance * saddleSpacing (s, nearest, result.dimension);
+      const double limit = rho * std::sqrt (s.squared_radius) + spacing;
       mergeable = std::sqrt (a.maximum.height) < limit && std::sqrt (b.maximum.height) < limit;
     }
     else
@@ -268,6 +313,12 @@ mergeManifolds (const FlowParameters& params, FlowResult& result)
       const double limit = rho2 * s.squared_radius;
       mergeable = a.maximum.height < limit && b.maximum.height < limit;
     }
+    if (!mergeable && compact)
+    {
+      const double limit = compact_rho * std::sqrt (s.squared_radius) + spacing;
+      if (std::sqrt (a.maximum.height) < limit && std::sqrt (b.maximum.height) < limit)
+        compact_candidates.push_back (&s);
+    }
     if (mergeable)
     {
       const int ra = findRoot (parent, s.segment_a), rb = findRoot (parent, s.segment_b);
@@ -275,6 +326,9 @@ mergeManifolds (const FlowParameters& params, FlowResult& result)
         parent[static_cast<std::size_t> (std::max (ra, rb))] = std::min (ra, rb);
     }
   }
+
+  if (!compact_candidates.empty ())
+    mergeCompactGroups (result, compact_candidates, compact_size, parent);
 
   std::vector<int> component (static_cast<std::size_t> (m), -1);
   std::vector<std::int8_t> component_side;

@@ -42,9 +42,9 @@ double
 saddleSpacing (const SaddleFacet& saddle, const std::vector<double>& nearest, int dimension);
 
 /** \brief Merges the stable manifolds of \a result with the merge parameters of \a params (rho,
-  * sampling_tolerance, stump_ratio) and fills segments, cells[].segment, segment_adjacency.
-  * Requires manifolds and manifold_adjacency. With sampling_tolerance and stump_ratio 0: the
-  * paper's segmentation exactly.
+  * sampling_tolerance, stump_ratio, compact_rho, compact_size) and fills segments,
+  * cells[].segment, segment_adjacency. Requires manifolds and manifold_adjacency. With
+  * sampling_tolerance, stump_ratio and compact_size 0: the paper's segmentation exactly.
   *
   * Two finite manifolds A, B of the same side sharing facets are merged when, for their highest
   * shared facet t,
@@ -54,8 +54,18 @@ saddleSpacing (const SaddleFacet& saddle, const std::vector<double>& nearest, in
   * rho < 1 merges nothing, with or without a tolerance. Since a facet's radius can only be lower
   * than the maximum of a manifold touching it, the highest shared facet decides whether any shared
   * facet satisfies the rule. All mergeable pairs are joined (connected components), which is
-  * independent of order. The manifold at infinity is never merged. A larger rho or tolerance never
-  * gives more segments.
+  * independent of order. The manifold at infinity is never merged. Without the compact pass a
+  * larger rho or tolerance never gives more segments.
+  *
+  * Compact pass (compact_size > 0, compact_rho > rho >= 1; before the stumps): the shared facets
+  * that fail the rule at rho but pass it with compact_rho in its place are visited from the
+  * shallowest (lowest ratio of the higher of the two maxima to the facet, squared radii) on; the
+  * two current groups they join merge when the smaller holds no more volume (area in 2D) than
+  * compact_size balls (discs) of the facet's circumradius. Group volumes are sums of manifold
+  * volumes and grow as groups merge. Why: a protrusion that runs far beyond its neck (a handle, a
+  * finger) is a part; a bulge no bigger than a couple of balls of its neck is not, however deep
+  * (on the PSB both kinds have ratios near 1.1). Groups grow, so a larger rho can leave a candidate
+  * between two groups that are no longer compact: the pass is not monotone in rho.
   *
   * Why the tolerance: the sample's distance function differs from the surface's by up to about
   * the sample spacing (a point of the surface is that close to a sample, not on it), so heights of

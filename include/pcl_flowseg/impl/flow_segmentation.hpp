@@ -70,6 +70,8 @@ FlowSegmentation<PointT>::remerge (double rho, std::vector<PointIndices>& segmen
   merge.rho = rho;
   merge.sampling_tolerance = params_.sampling_tolerance;
   merge.stump_ratio = params_.stump_ratio;
+  merge.compact_rho = params_.compact_rho;
+  merge.compact_size = params_.compact_size;
   const pcl_flowseg::Status status = pcl_flowseg::remergeFlowSegmentation (merge, result_);
   if (!status.ok)
   {
