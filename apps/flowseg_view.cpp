@@ -36,6 +36,7 @@ INPUT: any file flowseg_segment reads, a mesh (sampled) or a silhouette image.
 
 Options:
   -r, --rho R            merge threshold (default )" << pcl_flowseg::kDefaultRho << R"()
+      --paper-rule       the paper's merging rule alone (no tolerance, compact pass or stumps)
   -f, --features SIDE    interior | exterior | both (default interior)
       --significance F   centroid spheres for features above this volume share (default 0.02)
       --surface          draw the reconstructed surface as a wireframe
@@ -63,6 +64,7 @@ main (int argc, char** argv)
 {
   std::string input, screenshot;
   double rho = pcl_flowseg::kDefaultRho, significance = 0.02, point_size = 3;
+  bool paper_rule = false;
   pcl_flowseg::FeatureSide side = pcl_flowseg::FeatureSide::Interior;
   bool surface = false, has_view = false;
   int width = 900, height = 700;
@@ -81,6 +83,8 @@ main (int argc, char** argv)
     }
     else if ((a == "-r" || a == "--rho") && more && flowseg_app::parseNumber (argv[i + 1], v) && v > 0)
       rho = v, ++i;
+    else if (a == "--paper-rule")
+      paper_rule = true;
     else if ((a == "-f" || a == "--features") && more)
     {
       const std::string s = argv[++i];
@@ -131,6 +135,12 @@ main (int argc, char** argv)
   pcl::FlowSegmentation<pcl::PointXYZ> seg;
   seg.setInputCloud (cloud);
   seg.setRho (rho);
+  if (paper_rule)
+  {
+    seg.setSamplingTolerance (0.0);
+    seg.setCompactSize (0.0);
+    seg.setStumpRatio (0.0);
+  }
   seg.setFeatureSide (side);
   std::vector<pcl::PointIndices> features;
   if (!seg.segment (features))

@@ -12,9 +12,9 @@ view() { xvfb-run -a -s "-screen 0 1280x1024x24" "$build/apps/flowseg_view" "$@"
 
 # The generated animal: its eight parts.
 view samples/animal3d.pcd --surface --screenshot "$out/animal3d.png"
-# The paper's Figure 6: the cactus without merging and at rho 1.1, 1.8, 2.0.
+# The paper's Figure 6: the cactus without merging and at rho 1.1, 1.8, 2.0 (the paper's rule).
 for rho in 0.9 1.1 1.8 2.0; do
-  view "$data/meshes/cactus.off" --mesh-points 20000 --rho "$rho" --point-size 2 --screenshot "$out/cactus_rho$rho.png"
+  view "$data/meshes/cactus.off" --mesh-points 20000 --rho "$rho" --paper-rule --point-size 2 --screenshot "$out/cactus_rho$rho.png"
 done
 # The paper's Figure 8: the hand at two densities.
 for n in 2301 25626; do
