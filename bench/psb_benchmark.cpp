@@ -49,6 +49,7 @@ struct Options
   std::string csv;
   std::string pictures; // folder for PNG pictures of each model's segmentations; empty: none
   pcl_flowseg::FlowParameters flow; // every flowseg run; rho is set per run from \a rhos
+  double significance = 0.0; // > 0: only features above this share of the feature volume label faces
 };
 
 const char* const kUsage =
@@ -57,7 +58,10 @@ const char* const kUsage =
   "                         [--no-sdf] [--csv FILE] [--pictures DIR]\n"
   "                         [--tolerance T] [--stump-ratio S] [--compact-rho R] [--compact-size S]\n"
   "                         [--paper-rule]   (merge parameters: the library's defaults unless given)\n"
+  "                         [--significance F (0: every feature)]\n"
   "  --paper-rule: the paper's merging rule alone (tolerance, stump ratio, compact size 0)\n"
+  "  --significance F: only features above F of the features' volume label faces; the faces of the\n"
+  "                    others take the label of the nearest significant samples\n"
   "  --pictures DIR: DIR/<id>_human.png, <id>_flowseg_rho<R>.png, <id>_sdf.png for every model\n";
 
 std::vector<std::string>
@@ -103,6 +107,13 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
        : a == "--stump-ratio" ? o.flow.stump_ratio
        : a == "--compact-rho" ? o.flow.compact_rho
                               : o.flow.compact_size) = v;
+    }
+    else if (a == "--significance" && has_value)
+    {
+      char* end = nullptr;
+      o.significance = std::strtod (argv[++i], &end);
+      if (*end || !std::isfinite (o.significance) || o.significance < 0 || o.significance >= 1)
+        return error = "--significance needs a number in [0, 1)", false;
     }
     else if (a == "--paper-rule")
       o.flow.sampling_tolerance = o.flow.stump_ratio = o.flow.compact_size = 0.0;
@@ -256,6 +267,23 @@ readHumanSegmentations (const fs::path& dir, std::size_t faces, std::vector<std:
   return Status::success ();
 }
 
+/** Features (indices into FlowResult::features, as in point_labels) holding less than \a share of
+  * the features' total volume; none when \a share is 0. */
+std::vector<std::uint32_t>
+insignificantFeatures (const pcl_flowseg::FlowResult& result, double share)
+{
+  std::vector<std::uint32_t> out;
+  if (!(share > 0.0))
+    return out;
+  double total = 0.0;
+  for (int f : result.features)
+    total += result.segments[static_cast<std::size_t> (f)].volume;
+  for (std::size_t k = 0; k < result.features.size (); ++k)
+    if (result.segments[static_cast<std::size_t> (result.features[k])].volume < share * total)
+      out.push_back (static_cast<std::uint32_t> (k));
+  return out;
+}
+
 /** Segments \a points at \a rho (the options' parameters otherwise) into \a result, timed. */
 MethodResult
 runFlow (const std::vector<Eigen::Vector3d>& points, double rho, const Options& o, pcl_flowseg::FlowResult& result)
@@ -308,7 +336,8 @@ evaluateModel (const Model& model, const Options& o)
     if (m.error.empty ())
     {
       const auto start = std::chrono::steady_clock::now ();
-      const auto labels = pcl_flowseg::transferPointLabelsToFaces (mesh, points, result.point_labels);
+      const auto labels = pcl_flowseg::transferPointLabelsToFaces (mesh, points, result.point_labels,
+                                                                   insignificantFeatures (result, o.significance));
       r.transfer_seconds += secondsSince (start);
       m.score = meanError (areas, labels, humans);
       m.segments = static_cast<double> (distinctLabels (labels));
@@ -597,8 +626,8 @@ main (int argc, char** argv)
   std::printf ("PSB: %zu models from %s, %zu points per model, seed %u, rho", models.size (), o.data.c_str (), o.points, o.seed);
   for (double rho : o.rhos)
     std::printf (" %g", rho);
-  std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g", o.flow.sampling_tolerance,
-               o.flow.stump_ratio, o.flow.compact_rho, o.flow.compact_size);
+  std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g, significance %g",
+               o.flow.sampling_tolerance, o.flow.stump_ratio, o.flow.compact_rho, o.flow.compact_size, o.significance);
   std::printf ("; errors: area-weighted Rand-index error, mean over the model's human segmentations\n\n");
   std::vector<ModelResult> results;
   for (std::size_t i = 0; i < models.size (); ++i)

@@ -198,6 +198,7 @@ reclaimStumps (const FlowResult& result, const std::vector<double>& height, doub
     }
   }
 }
+
 /** Volume (area in 2D) of the ball (disc) of squared radius \a r2 in \a dimension. */
 double
 ballVolume (double r2, int dimension)
@@ -301,10 +302,10 @@ mergeManifolds (const FlowParameters& params, FlowResult& result)
         side[static_cast<std::size_t> (s.segment_a)] != side[static_cast<std::size_t> (s.segment_b)])
       continue;
     bool mergeable;
-    const double spacing = tolerant ? sampling_tolerance * saddleSpacing (s, nearest, result.dimension) : 0.0;
+    const double tolerance_term = tolerant ? sampling_tolerance * saddleSpacing (s, nearest, result.dimension) : 0.0;
     if (tolerant)
     {
-      const double limit = rho * std::sqrt (s.squared_radius) + spacing;
+      const double limit = rho * std::sqrt (s.squared_radius) + tolerance_term;
       mergeable = std::sqrt (a.maximum.height) < limit && std::sqrt (b.maximum.height) < limit;
     }
     else
@@ -315,7 +316,7 @@ mergeManifolds (const FlowParameters& params, FlowResult& result)
     }
     if (!mergeable && compact)
     {
-      const double limit = compact_rho * std::sqrt (s.squared_radius) + spacing;
+      const double limit = compact_rho * std::sqrt (s.squared_radius) + tolerance_term;
       if (std::sqrt (a.maximum.height) < limit && std::sqrt (b.maximum.height) < limit)
         compact_candidates.push_back (&s);
     }
