@@ -4,9 +4,9 @@
  */
 #include "app_common.h"
 
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/shape_input.h>
-#include <pcl_flowseg/signature_database.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/signature_database.h>
 
 #include <atomic>
 #include <chrono>

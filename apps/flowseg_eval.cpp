@@ -5,11 +5,11 @@
  */
 #include "app_common.h"
 
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/retrieval.h>
-#include <pcl_flowseg/shape_input.h>
-#include <pcl_flowseg/signature.h>
-#include <pcl_flowseg/signature_matcher.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/evaluation/retrieval.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/signature.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <pcl/console/print.h>
 

@@ -2,8 +2,8 @@
  * flowseg_make_samples: writes the procedural sample shapes (known parts) as PCD files.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/result_writer.h>
-#include <pcl_flowseg/shape_generator.h>
+#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/evaluation/shape_generator.h>
 
 #include <cerrno>
 #include <cstdlib>

@@ -2,10 +2,10 @@
  * flowseg_match: compares two shapes by their signatures; prints the similarity and the alignment.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/shape_input.h>
-#include <pcl_flowseg/signature.h>
-#include <pcl_flowseg/signature_matcher.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/signature.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <cmath>
 #include <cstdio>

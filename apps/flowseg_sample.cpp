@@ -4,9 +4,9 @@
  */
 #include "app_common.h"
 
-#include <pcl_flowseg/mesh_sampling.h>
-#include <pcl_flowseg/result_writer.h>
-#include <pcl_flowseg/silhouette.h>
+#include <pcl_flowseg/io/mesh_io.h>
+#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/io/silhouette.h>
 
 #include <cmath>
 #include <cstdlib>

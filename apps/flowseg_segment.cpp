@@ -5,9 +5,9 @@
  */
 #include "app_common.h"
 
-#include <pcl_flowseg/flow_segmentation.h>
-#include <pcl_flowseg/point_io.h>
-#include <pcl_flowseg/result_writer.h>
+#include <pcl_flowseg/segmentation/flow_segmentation.h>
+#include <pcl_flowseg/io/point_io.h>
+#include <pcl_flowseg/io/result_writer.h>
 
 #include <pcl/console/print.h>
 

@@ -2,9 +2,9 @@
  * flowseg_signature: prints the signature of a shape (its significant features as weighted points).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/shape_input.h>
-#include <pcl_flowseg/signature.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/signature.h>
 
 #include <cmath>
 #include <cstdio>

@@ -6,9 +6,9 @@
  */
 #include "app_common.h"
 
-#include <pcl_flowseg/flow_segmentation.h>
-#include <pcl_flowseg/result_writer.h>
-#include <pcl_flowseg/shape_input.h>
+#include <pcl_flowseg/segmentation/flow_segmentation.h>
+#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/io/shape_input.h>
 
 #include <pcl/PolygonMesh.h>
 #include <pcl/common/io.h>

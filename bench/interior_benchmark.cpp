@@ -7,8 +7,8 @@
  * lies inside the mesh. Prints a Markdown table (one row per run) and a summary.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/mesh_sampling.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/evaluation/mesh_inside_test.h>
 
 #include <pcl/kdtree/kdtree_flann.h>
 #include <Eigen/Eigenvalues>

@@ -10,11 +10,11 @@
  *    candidates, and with every shape aligned where that finishes in reasonable time.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/shape_generator.h>
-#include <pcl_flowseg/shape_input.h>
-#include <pcl_flowseg/signature.h>
-#include <pcl_flowseg/signature_database.h>
-#include <pcl_flowseg/signature_matcher.h>
+#include <pcl_flowseg/evaluation/shape_generator.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/signature.h>
+#include <pcl_flowseg/signature/signature_database.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <Eigen/Geometry>
 

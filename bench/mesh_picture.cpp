@@ -4,7 +4,7 @@
  */
 #include "mesh_picture.h"
 
-#include <pcl_flowseg/retrieval.h>
+#include <pcl_flowseg/evaluation/retrieval.h>
 
 #include <Eigen/Eigenvalues>
 

@@ -12,10 +12,10 @@
  * speed-up over the paper's Figure 9 (2.8 GHz Pentium IV) where a size matches its models.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/mesh_sampling.h>
-#include <pcl_flowseg/shape_generator.h>
-#include <pcl_flowseg/signature.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/io/mesh_io.h>
+#include <pcl_flowseg/evaluation/shape_generator.h>
+#include <pcl_flowseg/signature/signature.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -9,14 +9,14 @@
  * with known parts, scored on their points. Prints one line per model and a table per category.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include "atomic_file.h"
+#include <pcl_flowseg/io/atomic_file.h>
 #include "mesh_picture.h"
 #include "sdf_peer.h"
 
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/mesh_sampling.h>
-#include <pcl_flowseg/segmentation_evaluation.h>
-#include <pcl_flowseg/shape_generator.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/io/mesh_io.h>
+#include <pcl_flowseg/evaluation/segmentation_evaluation.h>
+#include <pcl_flowseg/evaluation/shape_generator.h>
 
 #include <algorithm>
 #include <chrono>

@@ -8,9 +8,9 @@
  * relative to the bounding-box diagonal.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/mesh_sampling.h>
-#include <pcl_flowseg/shape_generator.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/io/mesh_io.h>
+#include <pcl_flowseg/evaluation/shape_generator.h>
 
 #include <algorithm>
 #include <cstdio>

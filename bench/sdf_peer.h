@@ -4,8 +4,8 @@
  */
 #pragma once
 
-#include <pcl_flowseg/mesh_sampling.h>
-#include <pcl_flowseg/status.h>
+#include <pcl_flowseg/io/mesh_io.h>
+#include <pcl_flowseg/common/status.h>
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 // Fuzzes the signature database reader, and matching what it loaded.
 #include "fuzz_support.h"
 
-#include <pcl_flowseg/signature_database.h>
+#include <pcl_flowseg/signature/signature_database.h>
 
 extern "C" int
 LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)

@@ -1,7 +1,7 @@
 // Fuzzes the silhouette readers (PNG, BMP, PGM) and the boundary extraction.
 #include "fuzz_support.h"
 
-#include <pcl_flowseg/silhouette.h>
+#include <pcl_flowseg/io/silhouette.h>
 
 extern "C" int
 LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)

@@ -1,7 +1,7 @@
 // Fuzzes loadTriangleMesh and mesh sampling: the first byte picks OFF, OBJ or PLY.
 #include "fuzz_support.h"
 
-#include <pcl_flowseg/mesh_sampling.h>
+#include <pcl_flowseg/io/mesh_io.h>
 
 #include <pcl/console/print.h>
 

@@ -1,7 +1,7 @@
 // Fuzzes loadPointCloud: the first byte picks the file type, the rest is the file.
 #include "fuzz_support.h"
 
-#include <pcl_flowseg/point_io.h>
+#include <pcl_flowseg/io/point_io.h>
 
 #include <pcl/console/print.h>
 

@@ -1,7 +1,7 @@
 // Fuzzes the whole segmentation with arbitrary small point sets: byte 0 picks the dimension mode
 // and the feature side, byte 1 rho; then 3 x int16 per point (with rare NaN/Inf and huge values).
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/signature.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/signature/signature.h>
 
 #include <cmath>
 #include <cstdint>

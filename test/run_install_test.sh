@@ -7,7 +7,8 @@ src=$2
 work=$(mktemp -d /tmp/flowseg_install_XXXXXX)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
-test -f "$work/prefix/include/pcl_flowseg/flow_segmentation.h"
+test -f "$work/prefix/include/pcl_flowseg/segmentation/flow_segmentation.h"
+test -f "$work/prefix/include/pcl_flowseg/evaluation/retrieval.h"
 test -f "$work/prefix/lib/cmake/pcl_flowseg/pcl_flowsegConfig.cmake" || test -f "$work"/prefix/lib/*/cmake/pcl_flowseg/pcl_flowsegConfig.cmake
 if grep -rl "CGAL/" "$work/prefix/include/pcl_flowseg" >/dev/null; then
   echo "FAILED: a public header includes CGAL"; exit 1
@@ -17,4 +18,13 @@ cmake --build "$work/consumer" -j 2 >/dev/null
 LD_LIBRARY_PATH="$work/prefix/lib:$(dirname "$(find "$work/prefix" -name 'libpcl_flowseg.so' | head -1)")" "$work/consumer/consumer"
 pc=$(find "$work/prefix" -name pcl_flowseg.pc | head -1)
 PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs pcl_flowseg | grep -q -- "-lpcl_flowseg"
+PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --libs pcl_flowseg_eval | grep -q -- "-lpcl_flowseg_eval"
+# The library users link for segmentation carries no evaluation code and no ESF dependency.
+lib=$(find "$work/prefix" -name 'libpcl_flowseg.so' | head -1)
+if nm -DC "$lib" | grep -qE ' T .*(scoreRetrieval|esfDescriptor|sampleShapes)'; then
+  echo "FAILED: libpcl_flowseg.so exports evaluation code"; exit 1
+fi
+if ldd "$lib" | grep -q libpcl_features; then
+  echo "FAILED: libpcl_flowseg.so links pcl_features"; exit 1
+fi
 echo "install: 1 passed, 0 failed"

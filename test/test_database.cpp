@@ -4,8 +4,8 @@
  */
 #include "test_support.h"
 
-#include <pcl_flowseg/retrieval.h>
-#include <pcl_flowseg/signature_database.h>
+#include <pcl_flowseg/evaluation/retrieval.h>
+#include <pcl_flowseg/signature/signature_database.h>
 
 #include <gtest/gtest.h>
 

@@ -3,12 +3,12 @@
  * CGAL's exact predicate, the parallel triangulation with the sequential one.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include "core/delaunay_cells.h"
-#include "core/flow_predicate.h"
-#include "core/parallel.h"
+#include "core/delaunay/delaunay_cells.h"
+#include "core/delaunay/flow_predicate.h"
+#include "core/support/parallel.h"
 #include "test_support.h"
 
-#include <pcl_flowseg/shape_generator.h>
+#include <pcl_flowseg/evaluation/shape_generator.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>

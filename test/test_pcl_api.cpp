@@ -4,7 +4,7 @@
  */
 #include "test_support.h"
 
-#include <pcl_flowseg/flow_segmentation.h>
+#include <pcl_flowseg/segmentation/flow_segmentation.h>
 
 #include <gtest/gtest.h>
 

@@ -4,14 +4,14 @@
  */
 #include "test_support.h"
 
-#include <pcl_flowseg/flow_segmentation.h>
-#include <pcl_flowseg/point_io.h>
-#include <pcl_flowseg/result_writer.h>
-#include <pcl_flowseg/mesh_sampling.h>
-#include <pcl_flowseg/shape_input.h>
-#include <pcl_flowseg/silhouette.h>
+#include <pcl_flowseg/segmentation/flow_segmentation.h>
+#include <pcl_flowseg/io/point_io.h>
+#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/io/mesh_io.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/io/silhouette.h>
 
-#include "atomic_file.h"
+#include <pcl_flowseg/io/atomic_file.h>
 
 #include <pcl/io/pcd_io.h>
 

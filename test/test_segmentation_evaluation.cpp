@@ -2,7 +2,7 @@
  * Segmentation evaluation: Rand-index error, PSB .seg files, point-to-face label transfer.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/segmentation_evaluation.h>
+#include <pcl_flowseg/evaluation/segmentation_evaluation.h>
 
 #include <gtest/gtest.h>
 

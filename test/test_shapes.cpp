@@ -4,7 +4,7 @@
  */
 #include "test_support.h"
 
-#include <pcl_flowseg/segmentation_evaluation.h>
+#include <pcl_flowseg/evaluation/segmentation_evaluation.h>
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
  */
 #include "test_support.h"
 
-#include <pcl_flowseg/feature_signature.h>
-#include <pcl_flowseg/signature_matcher.h>
+#include <pcl_flowseg/signature/feature_signature.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <gtest/gtest.h>
 

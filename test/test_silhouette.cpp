@@ -4,9 +4,9 @@
  */
 #include "test_support.h"
 
-#include <pcl_flowseg/retrieval.h>
-#include <pcl_flowseg/shape_input.h>
-#include <pcl_flowseg/silhouette.h>
+#include <pcl_flowseg/evaluation/retrieval.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/io/silhouette.h>
 
 #include <gtest/gtest.h>
 

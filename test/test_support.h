@@ -4,8 +4,8 @@
  */
 #pragma once
 
-#include <pcl_flowseg/flow_core.h>
-#include <pcl_flowseg/shape_generator.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/evaluation/shape_generator.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-// Segments a generated dumbbell through the installed package; exits 0 when the two bulbs
-// come out as two finite segments.
-#include <pcl_flowseg/flow_segmentation.h>
-#include <pcl_flowseg/shape_generator.h>
+// Segments a generated dumbbell through the installed package (both libraries: the shape generator
+// is in pcl_flowseg_eval); exits 0 when the two bulbs and the neck come out as segments.
+#include <pcl_flowseg/segmentation/flow_segmentation.h>
+#include <pcl_flowseg/evaluation/shape_generator.h>
 
 #include <iostream>
 

@@ -1,0 +1,56 @@
+/*
+ * pcl_flowseg - shape signatures: significant features as weighted points (paper, section 5).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/segmentation/flow_result.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/common/status.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace pcl_flowseg {
+
+/** \brief Default significance: a feature counts when its volume exceeds this fraction of the
+  * total interior volume. */
+constexpr double kDefaultSignificance = 0.02;
+
+/** \brief One significant feature: its representative point and weight. */
+struct WeightedPoint
+{
+  Eigen::Vector3d position = Eigen::Vector3d::Zero (); ///< volume-weighted centroid, normalised frame
+  double weight = 0.0;                                 ///< volume share among the significant features
+};
+
+/** \brief The signature of a shape: its significant interior features as weighted points.
+  *
+  * Normalised so that comparing two signatures is invariant to translation, rotation, mirroring and
+  * uniform scale: positions are relative to the volume-weighted centroid of the whole interior and
+  * divided by the length unit volume^(1/d) of the interior (a rotation-invariant scale, unlike the
+  * paper's bounding boxes); weights sum to 1. Points are ordered by decreasing weight. */
+struct Signature
+{
+  int dimension = 3;
+  std::vector<WeightedPoint> points;
+  double unit = 1.0;           ///< the length unit, in input units (interior volume^(1/d))
+  double interior_volume = 0.0; ///< in input units
+  double significance = kDefaultSignificance;
+};
+
+/** \brief Builds the signature from a segmentation with interior/exterior separation. Fails when the
+  * separation was not computed or found no interior. */
+Status
+signatureFromSegmentation (const FlowResult& result, double significance, Signature& signature);
+
+/** \brief The signature of a shape file (anything loadShapeSample reads): sample, segment with
+  * \a params, keep the features above \a significance. The message names the file on failure. */
+Status
+signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
+                      double significance, Signature& signature);
+
+} // namespace pcl_flowseg

@@ -1,0 +1,89 @@
+/*
+ * pcl_flowseg - a database of shape signatures: a versioned file, incremental additions, queries.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/signature/signature.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
+#include <pcl_flowseg/common/status.h>
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace pcl_flowseg {
+
+/** \brief One stored shape. */
+struct ShapeEntry
+{
+  std::string name;  ///< identifies the shape (the file path relative to the database's root)
+  std::string label; ///< its class (the name of the folder holding the file)
+  Signature signature;
+};
+
+/** \brief A query result. */
+struct QueryHit
+{
+  std::size_t entry = 0; ///< index into SignatureDatabase::entries()
+  double similarity = 0.0; ///< SignatureMatcher::Result::similarity (the ranking key)
+  double score = 0.0;      ///< the paper's raw score
+  /** True when the query was aligned with this shape (similarity and score set); false for shapes
+    * outside the candidates, ranked by summary distance only (similarity and score are NaN). */
+  bool aligned = true;
+  double summary_distance = 0.0; ///< distance between the two signatures' summaries
+};
+
+/** \brief Default number of stored shapes aligned per query (SignatureDatabase::setCandidates). */
+constexpr std::size_t kDefaultCandidates = 24;
+
+/** \brief Signatures of many shapes, kept in one text file:
+  *
+  *     pcl_flowseg signature database 1
+  *     shapes N
+  *     shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS NAME...
+  *     p X Y Z WEIGHT          (POINTS lines)
+  *
+  * Labels contain no white space; names may. Loading checks the header, the version, every count
+  * and number, and reports the line of the first problem. */
+class SignatureDatabase
+{
+public:
+  static constexpr int kVersion = 1;
+
+  Status load (const std::string& path);
+  /** Writes the whole database (to a temporary file, renamed when complete). */
+  Status save (const std::string& path) const;
+
+  /** Adds a shape, replacing a stored one of the same name. \return true when it was new. */
+  bool add (const ShapeEntry& entry);
+  bool contains (const std::string& name) const;
+  const std::vector<ShapeEntry>& entries () const { return entries_; }
+  std::size_t size () const { return entries_.size (); }
+
+  /** \brief How many stored shapes a query aligns in full: the \a count whose signature summaries
+    * lie nearest to the query's (a FLANN k-d tree over signatureSummary picks them); 0 = every
+    * stored shape (exact ranking; the cost grows with the database). Default kDefaultCandidates. */
+  void setCandidates (std::size_t count) { candidates_ = count; }
+  std::size_t getCandidates () const { return candidates_; }
+
+  /** \brief The \a k most similar stored shapes (all when k = 0). The aligned candidates come first,
+    * by decreasing similarity; the other shapes follow by increasing summary distance (aligned =
+    * false). Shapes of another dimension are skipped. Safe to call from several threads. */
+  std::vector<QueryHit> query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const;
+
+private:
+  struct CandidateIndex;
+  /** The candidate index, built on the first query after a change. */
+  std::shared_ptr<const CandidateIndex> candidateIndex () const;
+
+  std::vector<ShapeEntry> entries_;
+  std::unordered_map<std::string, std::size_t> by_name_;
+  std::size_t candidates_ = kDefaultCandidates;
+  mutable std::shared_ptr<const CandidateIndex> index_;
+  std::shared_ptr<std::mutex> index_mutex_ = std::make_shared<std::mutex> ();
+};
+
+} // namespace pcl_flowseg

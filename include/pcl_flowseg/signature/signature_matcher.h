@@ -1,0 +1,84 @@
+/*
+ * pcl_flowseg - matching two signatures (paper, section 5): alignment search and score.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/signature/signature.h>
+
+#include <pcl/pcl_macros.h>
+#include <pcl/make_shared.h>
+
+#include <utility>
+#include <vector>
+
+namespace pcl {
+
+/** \brief Compares two shape signatures; invariant to translation, rotation, mirroring and scale.
+  *
+  * The paper's alignment search: the heaviest points of the two signatures are made to coincide,
+  * then the segment from the heaviest point to another point of the second signature is turned
+  * onto every segment from the heaviest point to another point of the first (in 3D the rotation
+  * about that axis is then fixed by every pair of third points), with and without mirroring. Each
+  * alignment is scored: every point of one signature whose nearest neighbour (FLANN) in the other
+  * lies within the threshold adds 1 - |w_p - w_q| / (w_p + w_q); every point of either signature
+  * without a partner subtracts its weight. The similarity is the best score over all alignments,
+  * searched in both directions (moving the first onto the second and the second onto the first),
+  * so match (a, b) == match (b, a).
+  */
+class PCL_EXPORTS SignatureMatcher
+{
+public:
+  using Ptr = shared_ptr<SignatureMatcher>;
+  using ConstPtr = shared_ptr<const SignatureMatcher>;
+
+  /** \brief The best alignment found. */
+  struct Result
+  {
+    double score = 0.0;  ///< the paper's score: higher is more similar; at most the number of points
+    /** score divided by the larger number of points: 1 for identical signatures, comparable across
+      * signatures of different sizes (the raw score grows with the number of features). Databases
+      * rank by it. */
+    double similarity = 0.0;
+    /** Maps the second signature's (normalised) points onto the first's: x_a = linear * x_b +
+      * translation; linear is a rotation, mirrored when its determinant is -1. */
+    Eigen::Matrix3d linear = Eigen::Matrix3d::Identity ();
+    Eigen::Vector3d translation = Eigen::Vector3d::Zero ();
+    bool mirrored = false;
+    /** Matched pairs (index in the first signature, index in the second). */
+    std::vector<std::pair<int, int>> pairs;
+    std::size_t alignments = 0; ///< alignments scored
+  };
+
+  SignatureMatcher () = default;
+
+  /** \brief Largest distance between partner points, in the signatures' normalised length unit
+    * (interior volume^(1/d)). Default 0.4, chosen on the TOSCA set (0.2: first tier 0.48, 0.3:
+    * 0.53, 0.4: 0.55, 0.5: 0.54). */
+  inline void setThreshold (double threshold) { threshold_ = threshold; }
+  inline double getThreshold () const { return threshold_; }
+
+  /** \brief Also try mirrored alignments (default true: mirror images match). */
+  inline void setAllowMirror (bool allow) { allow_mirror_ = allow; }
+  inline bool getAllowMirror () const { return allow_mirror_; }
+
+  /** \brief How many of the heaviest points of each signature generate alignments (all points are
+    * scored). Default 4: on the TOSCA set 6 points took 1.4 ms per comparison for a first tier of
+    * 0.554, 4 points 0.24 ms for 0.533; the search costs O(m^2 n^2) alignments in 3D. */
+  inline void setAlignmentPoints (int count) { alignment_points_ = count; }
+  inline int getAlignmentPoints () const { return alignment_points_; }
+
+  /** \brief Similarity of \a a and \a b. Empty signatures score 0 against empty ones and minus the
+    * other's total weight otherwise. */
+  Result match (const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b) const;
+
+protected:
+  /** Best alignment moving \a b onto \a a, scored from b's points. */
+  Result alignOnto (const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b) const;
+
+  double threshold_ = 0.4;
+  bool allow_mirror_ = true;
+  int alignment_points_ = 4;
+};
+
+} // namespace pcl

@@ -1,0 +1,49 @@
+/*
+ * pcl_flowseg - internal: Delaunay triangulation turned into flat, CGAL-free cells.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/segmentation/flow_result.h>
+
+#include <string>
+#include <vector>
+
+namespace pcl_flowseg {
+namespace core {
+
+/** \brief Triangulates 2D points (CGAL, exact predicates) into \a cells: vertices and neighbors
+  * only, in canonical order (putInCanonicalOrder). Returns false with \a error when the points do
+  * not span the plane (fewer than 3 or all collinear). Points must be distinct. */
+bool
+triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells, std::string& error);
+
+/** \brief Triangulates 3D points into tetrahedra (vertices and neighbors, canonical order); in
+  * parallel (CGAL with TBB) when workerThreads() > 1, the input is large enough and the system's
+  * load leaves a core to spare. Returns false
+  * with \a error when the points do not span space (fewer than 4, collinear or coplanar). Points
+  * must be distinct. */
+enum class Insertion
+{
+  Automatic,  ///< parallel when it pays (see above)
+  Sequential,
+  Parallel    ///< whenever TBB may use two workers (tests)
+};
+
+bool
+triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells, std::string& error,
+               Insertion insertion = Insertion::Automatic);
+
+/** \brief The flow relation of triangles: flow_mask (exact test: a triangle flows across the edge
+  * opposite an obtuse angle), squared_radius and volume (area). Centroids are left for the caller,
+  * who knows the input frame. */
+void
+computeFlowRelation2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells);
+
+/** \brief The flow relation of tetrahedra: flow_mask (CGAL's exact side_of_bounded_sphere on each
+  * facet's diametral sphere), squared_radius and volume. */
+void
+computeFlowRelation3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells);
+
+} // namespace core
+} // namespace pcl_flowseg

@@ -1,0 +1,139 @@
+/*
+ * pcl_flowseg - internal: noise estimate and smoothing of a point sample (for in/out decisions).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "core/interior/denoising.h"
+
+#include "core/delaunay/delaunay_cells.h"
+
+#include <flann/flann.hpp>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+
+namespace pcl_flowseg {
+namespace core {
+
+namespace {
+
+/** Calls \a visit (i, mean, normal, variation) with the PCA of every point's neighbourhood. */
+template <typename Visit>
+void
+forEachNeighbourhood (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension, Visit visit)
+{
+  for (std::size_t i = 0; i < points.size (); ++i)
+  {
+    const std::size_t begin = hoods.first[i], end = hoods.first[i + 1];
+    if (end - begin < static_cast<std::size_t> (dimension + 1))
+    {
+      visit (i, points[i], Eigen::Vector3d::Zero (), 0.0);
+      continue;
+    }
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+    for (std::size_t k = begin; k < end; ++k)
+      mean += points[static_cast<std::size_t> (hoods.ids[k])];
+    mean /= static_cast<double> (end - begin);
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      const Eigen::Vector3d e = points[static_cast<std::size_t> (hoods.ids[k])] - mean;
+      cov += e * e.transpose ();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es (cov);
+    // Surfaces: the normal is the smallest direction. Curves in a plane: the smallest eigenvalue
+    // belongs to the plane's normal, the next one to the curve's normal.
+    const int normal_axis = dimension == 3 ? 0 : 1;
+    const double top = dimension == 3 ? es.eigenvalues ().sum () : es.eigenvalues ()[1] + es.eigenvalues ()[2];
+    const double variation = top > 0 ? std::max (0.0, es.eigenvalues ()[normal_axis]) / top : 0.0;
+    visit (i, mean, Eigen::Vector3d (es.eigenvectors ().col (normal_axis)), variation);
+  }
+}
+
+} // namespace
+
+Neighbourhoods
+nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points)
+{
+  Neighbourhoods h;
+  const std::size_t n = points.size ();
+  h.first.assign (n + 1, 0);
+  if (n == 0)
+    return h;
+  const std::size_t k = std::min<std::size_t> (kNoiseNeighbours, n);
+  // Coordinates relative to the first point keep float precision for large offsets.
+  std::vector<float> data (3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int a = 0; a < 3; ++a)
+      data[3 * i + static_cast<std::size_t> (a)] = static_cast<float> (points[i][a] - points[0][a]);
+  flann::Matrix<float> matrix (data.data (), n, 3);
+  flann::Index<flann::L2_Simple<float>> index (matrix, flann::KDTreeSingleIndexParams (10));
+  index.buildIndex ();
+  h.ids.resize (n * k);
+  std::vector<float> distances (n * k);
+  flann::Matrix<int> ids (h.ids.data (), n, k);
+  flann::Matrix<float> dist (distances.data (), n, k);
+  flann::SearchParams search (flann::FLANN_CHECKS_UNLIMITED, 0.0f, false);
+  search.cores = 0; // all cores
+  index.knnSearch (matrix, ids, dist, k, search);
+  for (std::size_t i = 0; i <= n; ++i)
+    h.first[i] = i * k;
+  return h;
+}
+
+double
+medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
+{
+  std::vector<double> variation (points.size (), 0.0);
+  forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const Eigen::Vector3d&, const Eigen::Vector3d&, double v) {
+    variation[i] = v;
+  });
+  if (variation.empty ())
+    return 0.0;
+  std::nth_element (variation.begin (), variation.begin () + static_cast<long> (variation.size () / 2), variation.end ());
+  return variation[variation.size () / 2];
+}
+
+std::vector<Eigen::Vector3d>
+smoothPoints (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
+{
+  std::vector<Eigen::Vector3d> out (points);
+  forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const Eigen::Vector3d& mean, const Eigen::Vector3d& normal, double) {
+    out[i] = points[i] - (points[i] - mean).dot (normal) * normal;
+  });
+  return out;
+}
+
+bool
+triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, std::vector<FlowCell>& cells,
+                    std::string& error)
+{
+  if (dimension == 3)
+  {
+    if (!triangulate3D (points, cells, error))
+      return false;
+    computeFlowRelation3D (points, cells);
+    return true;
+  }
+  // Plane coordinates in an orthonormal basis of the points' plane.
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+  for (const auto& p : points)
+    mean += p;
+  mean /= static_cast<double> (std::max<std::size_t> (1, points.size ()));
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+  for (const auto& p : points)
+    cov += (p - mean) * (p - mean).transpose ();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es (cov);
+  const Eigen::Vector3d u = es.eigenvectors ().col (2), v = es.eigenvectors ().col (1);
+  std::vector<Eigen::Vector2d> planar;
+  planar.reserve (points.size ());
+  for (const auto& p : points)
+    planar.emplace_back ((p - mean).dot (u), (p - mean).dot (v));
+  if (!triangulate2D (planar, cells, error))
+    return false;
+  computeFlowRelation2D (planar, cells);
+  return true;
+}
+
+} // namespace core
+} // namespace pcl_flowseg

@@ -1,0 +1,58 @@
+/*
+ * pcl_flowseg - internal: noise estimate and smoothing of a point sample (for in/out decisions).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/segmentation/flow_result.h>
+
+#include <string>
+#include <vector>
+
+namespace pcl_flowseg {
+namespace core {
+
+/** Median surface variation above which a sample may be noisy. Clean samples of the development
+  * meshes measure 0.0001 to 0.009 (5k to 50k points; a CAD part with thin blades, rotor.off at 5k,
+  * 0.064), 0.25% noise 0.011 to 0.12, 0.5% noise 0.04 to 0.16. */
+constexpr double kNoiseVariation = 0.04;
+/** Share of samples off the boundary of the raw labelling above which it is taken as failed.
+  * Clean samples: 0.002 (5k) to 0.05 (rotor.off at 5k); 0.25% noise at 5k: 0.014 to 0.13; 0.5%
+  * noise: 0.10 to 0.93. Where both this and the variation were exceeded, smoothing measured
+  * better; where only one was, the raw labelling did. */
+constexpr double kOffBoundaryShare = 0.08;
+/** Neighbours of the local PCA fits. */
+constexpr int kNoiseNeighbours = 16;
+/** Upper bound on smoothing passes. */
+constexpr int kMaxSmoothingPasses = 4;
+
+/** \brief Neighbourhoods as compressed rows: the neighbours of v are ids[first[v]] ..
+  * ids[first[v+1]-1] (v itself included). */
+struct Neighbourhoods
+{
+  std::vector<std::size_t> first;
+  std::vector<int> ids;
+};
+
+/** \brief The kNoiseNeighbours nearest points of every point (FLANN kd-tree, both cores). */
+Neighbourhoods
+nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points);
+
+/** \brief Median over the points of their surface variation: the smallest PCA eigenvalue of the
+  * neighbourhood over the sum of the d largest (d = 3: surfaces; d = 2: curves in a plane, whose
+  * third eigenvalue is zero). */
+double
+medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension);
+
+/** \brief One smoothing pass: every point is projected onto the PCA plane (2D: line) of its
+  * neighbourhood, through the neighbourhood's centroid. */
+std::vector<Eigen::Vector3d>
+smoothPoints (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension);
+
+/** \brief Triangulates points given in 3D (in 2D: points of one plane) into cells. */
+bool
+triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, std::vector<FlowCell>& cells,
+                    std::string& error);
+
+} // namespace core
+} // namespace pcl_flowseg

@@ -1,0 +1,355 @@
+/*
+ * pcl_flowseg - reading point samples from the file formats the apps accept.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/io/point_io.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+
+#include "io/file_extension.h"
+#include "io/point_fields.h"
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/common/io.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace pcl_flowseg {
+
+namespace {
+
+
+/** Splits a line into numbers (white space or commas); false when a token is not a number. */
+bool
+parseNumbers (const std::string& line, std::vector<double>& values)
+{
+  values.clear ();
+  const char* s = line.c_str ();
+  while (*s)
+  {
+    while (*s && (std::isspace (static_cast<unsigned char> (*s)) || *s == ','))
+      ++s;
+    if (!*s)
+      break;
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod (s, &end);
+    if (end == s || (*end && !std::isspace (static_cast<unsigned char> (*end)) && *end != ','))
+      return false;
+    values.push_back (v);
+    s = end;
+  }
+  return true;
+}
+
+std::string
+stripComment (const std::string& line)
+{
+  const std::size_t hash = line.find ('#');
+  return hash == std::string::npos ? line : line.substr (0, hash);
+}
+
+std::string
+where (const std::string& path, std::size_t line)
+{
+  return path + ":" + std::to_string (line) + ": ";
+}
+
+Status
+loadText (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
+{
+  std::string line;
+  std::vector<double> v;
+  std::size_t number = 0, columns = 0;
+  while (std::getline (in, line))
+  {
+    ++number;
+    const std::string body = stripComment (line);
+    if (!parseNumbers (body, v))
+      return Status::error (where (path, number) + "not a list of numbers: '" + line.substr (0, 80) + "'");
+    if (v.empty ())
+      continue;
+    if (v.size () < 2)
+      return Status::error (where (path, number) + "expected at least 2 coordinates (x y [z])");
+    if (columns == 0)
+      columns = v.size ();
+    else if (v.size () != columns)
+      return Status::error (where (path, number) + "has " + std::to_string (v.size ()) + " columns, earlier lines " +
+                            std::to_string (columns));
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (v[0]), static_cast<float> (v[1]),
+                                    v.size () > 2 ? static_cast<float> (v[2]) : 0.0f));
+    if (v.size () >= 6)
+      normals.emplace_back (v[3], v[4], v[5]);
+  }
+  if (in.bad ())
+    return Status::error (path + ": read error");
+  return Status::success ();
+}
+
+/** Next line that is not empty or a comment; false at the end. */
+bool
+nextContentLine (std::istream& in, std::string& body, std::size_t& number)
+{
+  std::string line;
+  while (std::getline (in, line))
+  {
+    ++number;
+    body = stripComment (line);
+    if (body.find_first_not_of (" \t\r") != std::string::npos)
+      return true;
+  }
+  return false;
+}
+
+Status
+loadOff (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  std::size_t number = 0;
+  std::string body;
+  if (!nextContentLine (in, body, number))
+    return Status::error (path + ": empty file");
+  std::istringstream header (body);
+  std::string magic;
+  header >> magic;
+  if (magic.size () < 3 || magic.compare (magic.size () - 3, 3, "OFF") != 0)
+    return Status::error (where (path, number) + "not an OFF file (no OFF header)");
+  if (magic != "OFF" && magic != "COFF" && magic != "NOFF" && magic != "CNOFF")
+    return Status::error (where (path, number) + "unsupported OFF variant '" + magic + "'");
+  std::vector<double> counts;
+  std::string rest;
+  std::getline (header, rest);
+  if (!parseNumbers (rest, counts) || counts.empty ())
+  {
+    if (!nextContentLine (in, body, number) || !parseNumbers (body, counts))
+      return Status::error (where (path, number) + "missing vertex/face counts");
+  }
+  if (counts.empty () || counts[0] < 0 || counts[0] > 1e9 || counts[0] != static_cast<double> (static_cast<long long> (counts[0])))
+    return Status::error (where (path, number) + "invalid vertex count");
+  const std::size_t n = static_cast<std::size_t> (counts[0]);
+  cloud.reserve (std::min<std::size_t> (n, 1u << 20)); // grows with the file, not with its claim
+  std::vector<double> v;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    if (!nextContentLine (in, body, number))
+      return Status::error (path + ": file ends after " + std::to_string (k) + " of " + std::to_string (n) + " vertices");
+    if (!parseNumbers (body, v) || v.size () < 3)
+      return Status::error (where (path, number) + "expected a vertex 'x y z'");
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (v[0]), static_cast<float> (v[1]), static_cast<float> (v[2])));
+  }
+  return Status::success ();
+}
+
+Status
+loadObj (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  std::string line;
+  std::vector<double> v;
+  std::size_t number = 0;
+  while (std::getline (in, line))
+  {
+    ++number;
+    if (line.size () < 2 || line[0] != 'v' || !std::isspace (static_cast<unsigned char> (line[1])))
+      continue; // faces, normals, texture coordinates, groups...
+    if (!parseNumbers (stripComment (line.substr (2)), v) || v.size () < 3)
+      return Status::error (where (path, number) + "expected a vertex 'v x y z'");
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (v[0]), static_cast<float> (v[1]), static_cast<float> (v[2])));
+  }
+  return Status::success ();
+}
+
+/** PCL's PCD reader does not survive every malformed header, so the header is checked first:
+  * known keywords only, consistent field lists, a sane point count, and enough bytes for
+  * binary data. */
+Status
+checkPcdHeader (const std::string& path)
+{
+  std::ifstream in (path, std::ios::binary);
+  std::string line;
+  std::size_t number = 0;
+  std::vector<std::string> fields, sizes, types, counts;
+  long long width = -1, height = 1, points = -1;
+  std::string data;
+  while (data.empty () && std::getline (in, line))
+  {
+    if (++number > 64 || line.size () > 4096)
+      return Status::error (path + ": not a PCD file (no DATA line in the header)");
+    if (!line.empty () && line.back () == '\r')
+      line.pop_back ();
+    if (line.empty () || line[0] == '#')
+      continue;
+    std::istringstream words (line);
+    std::string key;
+    words >> key;
+    std::vector<std::string> values;
+    for (std::string w; words >> w;)
+      values.push_back (w);
+    auto integer = [&] (long long& out) {
+      char* end = nullptr;
+      if (values.size () != 1)
+        return false;
+      out = std::strtoll (values[0].c_str (), &end, 10);
+      return *end == '\0' && out >= 0;
+    };
+    if (key == "VERSION" || key == "VIEWPOINT")
+      continue;
+    else if (key == "FIELDS") fields = values;
+    else if (key == "SIZE") sizes = values;
+    else if (key == "TYPE") types = values;
+    else if (key == "COUNT") counts = values;
+    else if (key == "WIDTH") { if (!integer (width)) return Status::error (where (path, number) + "invalid WIDTH"); }
+    else if (key == "HEIGHT") { if (!integer (height)) return Status::error (where (path, number) + "invalid HEIGHT"); }
+    else if (key == "POINTS") { if (!integer (points)) return Status::error (where (path, number) + "invalid POINTS"); }
+    else if (key == "DATA")
+    {
+      if (values.size () != 1 || (values[0] != "ascii" && values[0] != "binary" && values[0] != "binary_compressed"))
+        return Status::error (where (path, number) + "unknown DATA type");
+      data = values[0];
+    }
+    else
+      return Status::error (path + ": not a PCD file (unexpected '" + key.substr (0, 40) + "' at line " +
+                            std::to_string (number) + ")");
+  }
+  if (data.empty ())
+    return Status::error (path + ": not a PCD file (no DATA line in the header)");
+  if (fields.empty () || sizes.size () != fields.size () || types.size () != fields.size () ||
+      (!counts.empty () && counts.size () != fields.size ()))
+    return Status::error (path + ": malformed PCD header (FIELDS, SIZE, TYPE, COUNT disagree)");
+  if (points < 0)
+    points = width >= 0 ? width * height : -1;
+  if (points < 0 || points > 2000000000LL || (width >= 0 && width * height != points))
+    return Status::error (path + ": malformed PCD header (WIDTH x HEIGHT and POINTS disagree or are missing)");
+  long long point_bytes = 0;
+  for (std::size_t k = 0; k < fields.size (); ++k)
+  {
+    const std::string& size = sizes[k];
+    const std::string& type = types[k];
+    if ((size != "1" && size != "2" && size != "4" && size != "8") || (type != "I" && type != "U" && type != "F"))
+      return Status::error (path + ": malformed PCD header (field '" + fields[k] + "' has an invalid SIZE/TYPE)");
+    long long count = 1;
+    if (!counts.empty ())
+    {
+      char* end = nullptr;
+      count = std::strtoll (counts[k].c_str (), &end, 10);
+      if (*end != '\0' || count < 1 || count > 100000)
+        return Status::error (path + ": malformed PCD header (invalid COUNT)");
+    }
+    point_bytes += count * std::stoll (size);
+  }
+  const std::size_t available = availableMemory ();
+  if (available > 0 && static_cast<double> (points) * static_cast<double> (point_bytes + 16) > 0.5 * static_cast<double> (available))
+    return Status::error (path + ": " + std::to_string (points) + " points would not fit in the available memory: refused");
+  if (data == "binary")
+  {
+    const std::streampos start = in.tellg ();
+    in.seekg (0, std::ios::end);
+    const long long available = static_cast<long long> (in.tellg () - start);
+    if (available < points * point_bytes)
+      return Status::error (path + ": truncated PCD file (" + std::to_string (available) + " data bytes, header promises " +
+                            std::to_string (points * point_bytes) + ")");
+  }
+  return Status::success ();
+}
+
+Status
+loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
+{
+  if (pcd)
+  {
+    const Status header = checkPcdHeader (path);
+    if (!header)
+      return header;
+  }
+  pcl::PCLPointCloud2 blob;
+  Eigen::Vector4f origin = Eigen::Vector4f::Zero ();
+  Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity ();
+  const int rc = pcd ? pcl::io::loadPCDFile (path, blob, origin, orientation) : pcl::io::loadPLYFile (path, blob);
+  if (rc < 0)
+    return Status::error (path + ": not a readable " + std::string (pcd ? "PCD" : "PLY") + " file");
+  const Status read = pointsFromBlob (blob, path, cloud, &normals);
+  if (!read)
+    return read;
+  cloud.sensor_origin_ = origin;
+  cloud.sensor_orientation_ = orientation;
+  return Status::success ();
+}
+
+} // namespace
+
+bool
+isSupportedPointFile (const std::string& path)
+{
+  const std::string ext = lowerExtension (path);
+  return ext == "pcd" || ext == "ply" || ext == "xyz" || ext == "txt" || ext == "csv" || ext == "off" || ext == "obj";
+}
+
+Status
+loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
+{
+  std::vector<Eigen::Vector3d> normals;
+  return loadPointCloud (path, cloud, normals);
+}
+
+Status
+loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
+{
+  cloud.clear ();
+  normals.clear ();
+  const std::string ext = lowerExtension (path);
+  if (!isSupportedPointFile (path))
+    return Status::error (path + ": unknown file type '." + ext +
+                          "' (expected .pcd, .ply, .xyz, .txt, .csv, .off or .obj)");
+  std::ifstream in (path, std::ios::binary);
+  if (!in)
+    return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
+
+  Status status;
+  try
+  {
+  if (ext == "pcd" || ext == "ply")
+  {
+    in.close ();
+    status = loadWithPcl (path, ext == "pcd", cloud, normals);
+  }
+  else if (ext == "off")
+    status = loadOff (path, in, cloud);
+  else if (ext == "obj")
+    status = loadObj (path, in, cloud);
+  else
+    status = loadText (path, in, cloud, normals);
+  }
+  catch (const std::bad_alloc&)
+  {
+    status = Status::error (path + ": out of memory while reading");
+  }
+  catch (const std::exception& e)
+  {
+    status = Status::error (path + ": " + e.what ());
+  }
+
+  if (!status.ok)
+  {
+    cloud.clear ();
+    normals.clear ();
+    return status;
+  }
+  if (normals.size () != cloud.size ())
+    normals.clear ();
+  if (cloud.empty ())
+    return Status::error (path + ": contains no points");
+  cloud.width = static_cast<std::uint32_t> (cloud.size ());
+  cloud.height = 1;
+  cloud.is_dense = std::all_of (cloud.begin (), cloud.end (), [] (const pcl::PointXYZ& p) {
+    return std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z);
+  });
+  return Status::success ();
+}
+
+} // namespace pcl_flowseg

@@ -1,0 +1,228 @@
+/*
+ * pcl_flowseg - matching two signatures (paper, section 5): alignment search and score.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/signature/signature_matcher.h>
+
+#include <flann/flann.hpp>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcl {
+
+namespace {
+
+using pcl_flowseg::Signature;
+
+/** Nearest neighbours among the points of one signature: FLANN k-d tree for large signatures;
+  * for the usual handful of points a direct scan, which is several times faster than a tree query
+  * and gives the same answers (same float arithmetic, ties to the lower index). */
+class PointIndex
+{
+public:
+  static constexpr std::size_t kScanBelow = 48;
+
+  explicit PointIndex (const Signature& s) : data_ (3 * std::max<std::size_t> (1, s.points.size ()), 0.0f), count_ (s.points.size ())
+  {
+    for (std::size_t i = 0; i < s.points.size (); ++i)
+      for (int k = 0; k < 3; ++k)
+        data_[3 * i + static_cast<std::size_t> (k)] = static_cast<float> (s.points[i].position[k]);
+    if (count_ >= kScanBelow)
+    {
+      index_.reset (new flann::Index<flann::L2_Simple<float>> (flann::Matrix<float> (data_.data (), s.points.size (), 3),
+                                                               flann::KDTreeSingleIndexParams (4)));
+      index_->buildIndex ();
+    }
+  }
+
+  /** Nearest point (index, squared distance) of each of \a count queries (x y z floats), in one call. */
+  void
+  nearest (std::vector<float>& queries, std::size_t count, std::vector<int>& ids, std::vector<float>& dist) const
+  {
+    ids.assign (count, -1);
+    dist.assign (count, 0.0f);
+    if (count_ < kScanBelow)
+    {
+      for (std::size_t q = 0; q < count; ++q)
+      {
+        const float* x = &queries[3 * q];
+        float best = std::numeric_limits<float>::infinity ();
+        for (std::size_t i = 0; i < count_; ++i)
+        {
+          const float* p = &data_[3 * i];
+          const float d0 = x[0] - p[0], d1 = x[1] - p[1], d2 = x[2] - p[2];
+          const float d = d0 * d0 + d1 * d1 + d2 * d2;
+          if (d < best)
+          {
+            best = d;
+            ids[q] = static_cast<int> (i);
+          }
+        }
+        dist[q] = best;
+      }
+      return;
+    }
+    flann::Matrix<float> qm (queries.data (), count, 3);
+    flann::Matrix<int> im (ids.data (), count, 1);
+    flann::Matrix<float> dm (dist.data (), count, 1);
+    index_->knnSearch (qm, im, dm, 1, search_);
+  }
+
+  flann::SearchParams search_ = flann::SearchParams (flann::FLANN_CHECKS_UNLIMITED);
+
+private:
+  std::vector<float> data_;
+  std::size_t count_ = 0;
+  std::unique_ptr<flann::Index<flann::L2_Simple<float>>> index_;
+};
+
+/** Rotation taking unit vector \a from to unit vector \a to. */
+Eigen::Matrix3d
+rotationBetween (const Eigen::Vector3d& from, const Eigen::Vector3d& to)
+{
+  return Eigen::Quaterniond::FromTwoVectors (from, to).toRotationMatrix ();
+}
+
+} // namespace
+
+SignatureMatcher::Result
+SignatureMatcher::alignOnto (const Signature& a, const Signature& b) const
+{
+  Result best;
+  best.score = -std::numeric_limits<double>::infinity ();
+  const PointIndex index (a);
+  const double threshold2 = threshold_ * threshold_;
+  std::vector<int> partner_of_a (a.points.size ());
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<float> queries (3 * b.points.size ());
+  std::vector<int> ids;
+  std::vector<float> dist;
+
+  auto score = [&] (const Eigen::Matrix3d& linear, const Eigen::Vector3d& translation, bool mirrored) {
+    std::fill (partner_of_a.begin (), partner_of_a.end (), 0);
+    pairs.clear ();
+    for (std::size_t j = 0; j < b.points.size (); ++j)
+    {
+      const Eigen::Vector3d q = linear * b.points[j].position + translation;
+      for (int k = 0; k < 3; ++k)
+        queries[3 * j + static_cast<std::size_t> (k)] = static_cast<float> (q[k]);
+    }
+    index.nearest (queries, b.points.size (), ids, dist);
+    double s = 0.0;
+    for (std::size_t j = 0; j < b.points.size (); ++j)
+    {
+      const double wq = b.points[j].weight;
+      if (ids[j] >= 0 && dist[j] <= threshold2)
+      {
+        const double wp = a.points[static_cast<std::size_t> (ids[j])].weight;
+        s += 1.0 - std::abs (wp - wq) / (wp + wq);
+        partner_of_a[static_cast<std::size_t> (ids[j])] = 1;
+        pairs.emplace_back (ids[j], static_cast<int> (j));
+      }
+      else
+        s -= wq;
+    }
+    for (std::size_t i = 0; i < a.points.size (); ++i)
+      if (!partner_of_a[i])
+        s -= a.points[i].weight;
+    ++best.alignments;
+    if (s > best.score)
+    {
+      best.score = s;
+      best.linear = linear;
+      best.translation = translation;
+      best.mirrored = mirrored;
+      best.pairs = pairs;
+    }
+  };
+
+  const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (std::max (1, alignment_points_)));
+  const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (std::max (1, alignment_points_)));
+  const Eigen::Vector3d a0 = a.points[0].position;
+  for (int mirror = 0; mirror < (allow_mirror_ ? 2 : 1); ++mirror)
+  {
+    const Eigen::Matrix3d m = mirror ? Eigen::Vector3d (-1, 1, 1).asDiagonal ().toDenseMatrix () : Eigen::Matrix3d::Identity ();
+    const Eigen::Vector3d b0 = m * b.points[0].position;
+    // Heaviest points together, no rotation: the only alignment when either has a single point.
+    score (m, a0 - b0, mirror == 1);
+    for (std::size_t i = 1; i < ma; ++i)
+    {
+      const Eigen::Vector3d ua = a.points[i].position - a0;
+      if (ua.norm () == 0.0)
+        continue;
+      for (std::size_t j = 1; j < mb; ++j)
+      {
+        const Eigen::Vector3d ub = m * b.points[j].position - b0;
+        if (ub.norm () == 0.0)
+          continue;
+        const Eigen::Vector3d axis = ua.normalized ();
+        const Eigen::Matrix3d r1 = rotationBetween (ub.normalized (), axis);
+        bool fixed = false;
+        // The rotation about the axis: every pair of third points.
+        for (std::size_t k = 1; k < ma; ++k)
+        {
+          if (k == i)
+            continue;
+          Eigen::Vector3d pa = a.points[k].position - a0;
+          pa -= pa.dot (axis) * axis;
+          if (pa.norm () < 1e-9)
+            continue;
+          for (std::size_t l = 1; l < mb; ++l)
+          {
+            if (l == j)
+              continue;
+            Eigen::Vector3d pb = r1 * (m * b.points[l].position - b0);
+            pb -= pb.dot (axis) * axis;
+            if (pb.norm () < 1e-9)
+              continue;
+            const double angle = std::atan2 (axis.dot (pb.cross (pa)), pb.dot (pa));
+            const Eigen::Matrix3d r = Eigen::AngleAxisd (angle, axis).toRotationMatrix () * r1;
+            score (r * m, a0 - r * b0, mirror == 1);
+            fixed = true;
+          }
+        }
+        if (!fixed)
+          score (r1 * m, a0 - r1 * b0, mirror == 1);
+      }
+    }
+  }
+  return best;
+}
+
+SignatureMatcher::Result
+SignatureMatcher::match (const Signature& a, const Signature& b) const
+{
+  Result r;
+  if (a.points.empty () || b.points.empty ())
+  {
+    for (const auto& p : a.points)
+      r.score -= p.weight;
+    for (const auto& p : b.points)
+      r.score -= p.weight;
+    r.similarity = a.points.empty () && b.points.empty () ? 0.0 : r.score;
+    return r;
+  }
+  Result ab = alignOnto (a, b);
+  Result ba = alignOnto (b, a);
+  const std::size_t alignments = ab.alignments + ba.alignments;
+  if (ba.score > ab.score)
+  {
+    // Invert: x_b = L x_a + t  =>  x_a = L^T (x_b - t) (L is orthogonal).
+    r = ba;
+    r.linear = ba.linear.transpose ();
+    r.translation = -(ba.linear.transpose () * ba.translation);
+    for (auto& p : r.pairs)
+      std::swap (p.first, p.second);
+  }
+  else
+    r = ab;
+  r.alignments = alignments;
+  r.similarity = r.score / static_cast<double> (std::max (a.points.size (), b.points.size ()));
+  return r;
+}
+
+} // namespace pcl
