@@ -39,7 +39,7 @@ Options:
                        (default )" << pcl_flowseg::kDefaultCandidates << R"(; 0 = align every stored shape); the rest are
                        listed after them by summary distance, similarity "-"
       --label L        add: class of the added shapes (default: their folder name)
-      --rho R          merge threshold (default )" << pcl_flowseg::kDefaultRho << R"()
+      --rho R          merge threshold (default )" << pcl_flowseg::MergeParameters ().rho << R"()
       --significance F features above this share of the interior volume (default )" << pcl_flowseg::kDefaultSignificance << R"()
       --threshold T    matcher distance threshold, normalised units (default 0.4)
       --mesh-points N  points sampled on a mesh (default 5000)
@@ -62,7 +62,7 @@ struct Options
   std::size_t candidates = pcl_flowseg::kDefaultCandidates;
   std::string label;
   bool has_label = false;
-  double rho = pcl_flowseg::kDefaultRho;
+  double rho = pcl_flowseg::MergeParameters ().rho;
   double significance = pcl_flowseg::kDefaultSignificance;
   double threshold = pcl::SignatureMatcher ().getThreshold ();
   pcl_flowseg::ShapeInputOptions input;
@@ -75,7 +75,7 @@ bool
 signatureOfFile (const std::string& path, const Options& o, pcl_flowseg::Signature& s, std::string& error)
 {
   pcl_flowseg::FlowParameters params;
-  params.rho = o.rho;
+  params.merge.rho = o.rho;
   const auto st = pcl_flowseg::signatureOfShapeFile (path, o.input, params, o.significance, s);
   error = st.message;
   return st.ok;

@@ -49,7 +49,7 @@ same points), esf (PCL's Ensemble of Shape Functions).
 Options:
   -o, --output DIR     output folder (created), required
       --methods LIST   comma-separated, default flowseg,d2,esf
-      --rho R          merge threshold (default )" << pcl_flowseg::kDefaultRho << R"()
+      --rho R          merge threshold (default )" << pcl_flowseg::MergeParameters ().rho << R"()
       --significance F feature significance (default )" << pcl_flowseg::kDefaultSignificance << R"()
       --threshold T    matcher threshold (default 0.4)
       --alignment-points N  heaviest points generating alignments (default 4)
@@ -101,7 +101,7 @@ main (int argc, char** argv)
 {
   std::string root, out;
   std::string methods = "flowseg,d2,esf";
-  double rho = pcl_flowseg::kDefaultRho, significance = pcl_flowseg::kDefaultSignificance, threshold = pcl::SignatureMatcher ().getThreshold ();
+  double rho = pcl_flowseg::MergeParameters ().rho, significance = pcl_flowseg::kDefaultSignificance, threshold = pcl::SignatureMatcher ().getThreshold ();
   pcl_flowseg::ShapeInputOptions input;
   unsigned jobs = std::max (1u, std::thread::hardware_concurrency ());
   bool quiet = false;
@@ -189,7 +189,7 @@ main (int argc, char** argv)
     {
       const auto t0 = clock ();
       pcl_flowseg::FlowParameters params;
-      params.rho = rho;
+      params.merge.rho = rho;
       pcl_flowseg::FlowResult r;
       s = pcl_flowseg::runFlowSegmentation (pts, params, r);
       if (s.ok)

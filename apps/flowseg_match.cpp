@@ -18,7 +18,7 @@ bool
 signatureOf (const std::string& path, double rho, double significance, const pcl_flowseg::ShapeInputOptions& in, pcl_flowseg::Signature& s)
 {
   pcl_flowseg::FlowParameters params;
-  params.rho = rho;
+  params.merge.rho = rho;
   const auto st = pcl_flowseg::signatureOfShapeFile (path, in, params, significance, s);
   if (!st.ok)
     std::cerr << "flowseg_match: " << st.message << "\n";
@@ -30,7 +30,7 @@ int
 main (int argc, char** argv)
 {
   std::vector<std::string> inputs;
-  double rho = pcl_flowseg::kDefaultRho, significance = pcl_flowseg::kDefaultSignificance;
+  double rho = pcl_flowseg::MergeParameters ().rho, significance = pcl_flowseg::kDefaultSignificance;
   pcl::SignatureMatcher matcher;
   pcl_flowseg::ShapeInputOptions in;
   for (int i = 1; i < argc; ++i)
@@ -42,7 +42,7 @@ main (int argc, char** argv)
     if (a == "-h" || a == "--help")
     {
       std::cout << "Usage: flowseg_match A B [--threshold T (" << matcher.getThreshold () << ")] [--no-mirror] [--rho R ("
-                << pcl_flowseg::kDefaultRho << ")] [--significance F (" << pcl_flowseg::kDefaultSignificance
+                << pcl_flowseg::MergeParameters ().rho << ")] [--significance F (" << pcl_flowseg::kDefaultSignificance
                 << ")] [--mesh-points N (5000)]\n\n"
                 << "Prints the similarity (1 = identical signatures), the paper's score, the matched features and\n"
                 << "the transformation mapping B's normalised signature onto A's.\n"

@@ -32,14 +32,14 @@ its distance function (Dey, Giesen, Goswami 2003).
 INPUT  .pcd | .ply | .xyz/.txt/.csv (x y [z] per line) | .off/.obj (mesh vertices)
 
 Options:
-  -r, --rho R            merge threshold rho > 0 (default )" << pcl_flowseg::kDefaultRho << R"(); < 1 merges nothing
-      --tolerance T      merge tolerance in local sample spacings >= 0 (default )" << pcl_flowseg::kDefaultSamplingTolerance << R"();
+  -r, --rho R            merge threshold rho > 0 (default )" << pcl_flowseg::MergeParameters ().rho << R"(); < 1 merges nothing
+      --tolerance T      merge tolerance in local sample spacings >= 0 (default )" << pcl_flowseg::MergeParameters ().sampling_tolerance << R"();
       --stump-ratio R    thin parts take back their stumps from parts R times thicker
-                         (default )" << pcl_flowseg::kDefaultStumpRatio << R"(; 0 = off)
-      --compact-rho R    merge threshold for compact segments, > 0 (default )" << pcl_flowseg::kDefaultCompactRho << R"(;
+                         (default )" << pcl_flowseg::MergeParameters ().stump_ratio << R"(; 0 = off)
+      --compact-rho R    merge threshold for compact segments, > 0 (default )" << pcl_flowseg::MergeParameters ().compact_rho << R"(;
                          acts only above rho)
       --compact-size S   largest compact segment, in balls of its saddle's radius, >= 0
-                         (default )" << pcl_flowseg::kDefaultCompactSize << R"(; 0 = off)
+                         (default )" << pcl_flowseg::MergeParameters ().compact_size << R"(; 0 = off)
       --paper-rule       the paper's merging rule alone: tolerance, stump ratio and compact
                          size 0
   -d, --dimension D      auto | 2 | 3 (default auto: 2D when all points lie on one plane)
@@ -90,9 +90,9 @@ int
 main (int argc, char** argv)
 {
   std::string input, prefix;
-  double rho = pcl_flowseg::kDefaultRho;
-  double tolerance = pcl_flowseg::kDefaultSamplingTolerance, stump_ratio = pcl_flowseg::kDefaultStumpRatio;
-  double compact_rho = pcl_flowseg::kDefaultCompactRho, compact_size = pcl_flowseg::kDefaultCompactSize;
+  double rho = pcl_flowseg::MergeParameters ().rho;
+  double tolerance = pcl_flowseg::MergeParameters ().sampling_tolerance, stump_ratio = pcl_flowseg::MergeParameters ().stump_ratio;
+  double compact_rho = pcl_flowseg::MergeParameters ().compact_rho, compact_size = pcl_flowseg::MergeParameters ().compact_size;
   int dimension = 0;
   bool binary = false, quiet = false, separate = true, use_normals = false, use_sensor_origin = false, surface = true;
   pcl_flowseg::FeatureSide side = pcl_flowseg::FeatureSide::Interior;
@@ -293,7 +293,6 @@ main (int argc, char** argv)
 
   pcl_flowseg::RunInfo info;
   info.input = input;
-  info.rho = rho;
   info.read_ms = read_ms;
   info.significance = significance;
   std::vector<pcl_flowseg::Status> written = {pcl_flowseg::writeLabelCloud (prefix + ".labels.pcd", labels, binary),

@@ -16,7 +16,7 @@ int
 main (int argc, char** argv)
 {
   std::string input;
-  double rho = pcl_flowseg::kDefaultRho, significance = pcl_flowseg::kDefaultSignificance;
+  double rho = pcl_flowseg::MergeParameters ().rho, significance = pcl_flowseg::kDefaultSignificance;
   pcl_flowseg::ShapeInputOptions in;
   bool json = false;
   for (int i = 1; i < argc; ++i)
@@ -25,7 +25,7 @@ main (int argc, char** argv)
     char* end = nullptr;
     if (a == "-h" || a == "--help")
     {
-      std::cout << "Usage: flowseg_signature INPUT [--rho R (" << pcl_flowseg::kDefaultRho << ")] [--significance F ("
+      std::cout << "Usage: flowseg_signature INPUT [--rho R (" << pcl_flowseg::MergeParameters ().rho << ")] [--significance F ("
                 << pcl_flowseg::kDefaultSignificance << ")] [--mesh-points N (5000)] [--json]\n\n"
                 << "Prints the shape's significant features as weighted points in the normalised frame (positions\n"
                 << "relative to the interior's centroid, in units of interior volume^(1/d); weights sum to 1).\n"
@@ -62,7 +62,7 @@ main (int argc, char** argv)
   }
   pcl_flowseg::Signature s;
   pcl_flowseg::FlowParameters params;
-  params.rho = rho;
+  params.merge.rho = rho;
   const pcl_flowseg::Status st = pcl_flowseg::signatureOfShapeFile (input, in, params, significance, s);
   if (!st.ok)
   {

@@ -35,7 +35,7 @@ size follows the feature's volume share, and optionally the reconstructed surfac
 INPUT: any file flowseg_segment reads, a mesh (sampled) or a silhouette image.
 
 Options:
-  -r, --rho R            merge threshold (default )" << pcl_flowseg::kDefaultRho << R"()
+  -r, --rho R            merge threshold (default )" << pcl_flowseg::MergeParameters ().rho << R"()
       --paper-rule       the paper's merging rule alone (no tolerance, compact pass or stumps)
   -f, --features SIDE    interior | exterior | both (default interior)
       --significance F   centroid spheres for features above this volume share (default 0.02)
@@ -63,7 +63,7 @@ int
 main (int argc, char** argv)
 {
   std::string input, screenshot;
-  double rho = pcl_flowseg::kDefaultRho, significance = 0.02, point_size = 3;
+  double rho = pcl_flowseg::MergeParameters ().rho, significance = 0.02, point_size = 3;
   bool paper_rule = false;
   pcl_flowseg::FeatureSide side = pcl_flowseg::FeatureSide::Interior;
   bool surface = false, has_view = false;

@@ -161,8 +161,8 @@ main (int argc, char** argv)
         if (smooth_k > 0)
           pts = smooth (pts, smooth_k, smooth_iter);
         pcl_flowseg::FlowParameters params;
-        params.dimension = pcl_flowseg::DimensionMode::Spatial;
-        params.denoising = denoising;
+        params.preparation.dimension = pcl_flowseg::DimensionMode::Spatial;
+        params.interior.denoising = denoising;
         pcl_flowseg::FlowResult r;
         const auto status = pcl_flowseg::runFlowSegmentation (pts, params, r);
         if (!status)

@@ -158,7 +158,7 @@ measure (const Input& in, const std::string& mesh_path, int repeat, unsigned thr
     m.bare_parallel_ms = bareDelaunay<CGAL::Parallel_tag> (cgal_points, repeat, m.cells);
   }
   pcl_flowseg::FlowParameters params;
-  params.threads = threads;
+  params.execution.threads = threads;
   resetPeakMemory ();
   double best = 1e300;
   for (int r = 0; r < repeat; ++r)

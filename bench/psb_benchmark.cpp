@@ -103,10 +103,10 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
       const double v = std::strtod (argv[++i], &end);
       if (*end || !std::isfinite (v) || v < 0)
         return error = a + " needs a finite number >= 0", false;
-      (a == "--tolerance"     ? o.flow.sampling_tolerance
-       : a == "--stump-ratio" ? o.flow.stump_ratio
-       : a == "--compact-rho" ? o.flow.compact_rho
-                              : o.flow.compact_size) = v;
+      (a == "--tolerance"     ? o.flow.merge.sampling_tolerance
+       : a == "--stump-ratio" ? o.flow.merge.stump_ratio
+       : a == "--compact-rho" ? o.flow.merge.compact_rho
+                              : o.flow.merge.compact_size) = v;
     }
     else if (a == "--significance" && has_value)
     {
@@ -116,7 +116,7 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
         return error = "--significance needs a number in [0, 1)", false;
     }
     else if (a == "--paper-rule")
-      o.flow.sampling_tolerance = o.flow.stump_ratio = o.flow.compact_size = 0.0;
+      o.flow.merge.sampling_tolerance = o.flow.merge.stump_ratio = o.flow.merge.compact_size = 0.0;
     else if (a == "--seed" && has_value)
       o.seed = static_cast<std::uint32_t> (std::strtoul (argv[++i], nullptr, 10));
     else if (a == "--models" && has_value)
@@ -290,7 +290,7 @@ runFlow (const std::vector<Eigen::Vector3d>& points, double rho, const Options& 
 {
   MethodResult m;
   pcl_flowseg::FlowParameters params = o.flow;
-  params.rho = rho;
+  params.merge.rho = rho;
   const auto start = std::chrono::steady_clock::now ();
   const Status st = pcl_flowseg::runFlowSegmentation (points, params, result);
   m.seconds = secondsSince (start);
@@ -627,7 +627,7 @@ main (int argc, char** argv)
   for (double rho : o.rhos)
     std::printf (" %g", rho);
   std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g, significance %g",
-               o.flow.sampling_tolerance, o.flow.stump_ratio, o.flow.compact_rho, o.flow.compact_size, o.significance);
+               o.flow.merge.sampling_tolerance, o.flow.merge.stump_ratio, o.flow.merge.compact_rho, o.flow.merge.compact_size, o.significance);
   std::printf ("; errors: area-weighted Rand-index error, mean over the model's human segmentations\n\n");
   std::vector<ModelResult> results;
   for (std::size_t i = 0; i < models.size (); ++i)

@@ -15,11 +15,11 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   if (size < 2)
     return 0;
   pcl_flowseg::FlowParameters params;
-  params.dimension = static_cast<pcl_flowseg::DimensionMode> (std::array<int, 3>{{0, 2, 3}}[data[0] % 3]);
+  params.preparation.dimension = static_cast<pcl_flowseg::DimensionMode> (std::array<int, 3>{{0, 2, 3}}[data[0] % 3]);
   params.features = static_cast<pcl_flowseg::FeatureSide> ((data[0] / 3) % 3);
-  params.separate_interior = (data[0] / 9) % 4 != 0;
-  params.denoising = static_cast<pcl_flowseg::Denoising> ((data[0] / 36) % 3);
-  params.rho = 0.5 + data[1] / 64.0;
+  params.interior.separate = (data[0] / 9) % 4 != 0;
+  params.interior.denoising = static_cast<pcl_flowseg::Denoising> ((data[0] / 36) % 3);
+  params.merge.rho = 0.5 + data[1] / 64.0;
   std::vector<Eigen::Vector3d> points;
   for (std::size_t at = 2; at + 6 <= size && points.size () < 400; at += 6)
   {

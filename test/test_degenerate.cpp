@@ -17,14 +17,14 @@ using V = Eigen::Vector3d;
 
 namespace {
 Status
-run (const std::vector<V>& pts, DimensionMode mode = DimensionMode::Automatic, double rho = kDefaultRho)
+run (const std::vector<V>& pts, DimensionMode mode = DimensionMode::Automatic, double rho = flowseg_test::kDefaultMerge.rho)
 {
   FlowParameters params;
-  params.dimension = mode;
-  params.rho = rho;
+  params.preparation.dimension = mode;
+  params.merge.rho = rho;
   FlowResult r;
   const Status full = runFlowSegmentation (pts, params, r);
-  params.separate_interior = false;
+  params.interior.separate = false;
   const Status raw = runFlowSegmentation (pts, params, r);
   EXPECT_EQ (raw.ok, full.ok);
   EXPECT_EQ (raw.message, full.message);
@@ -137,8 +137,8 @@ TEST (Degenerate, RegularGridsAreCocircularEverywhere)
   EXPECT_EQ (r3.dimension, 3);
   expectConsistent (r3);
   // The whole pipeline (interior/exterior included) copes with the grids too.
-  expectConsistent (segmentOrDie (grid2, kDefaultRho, DimensionMode::Automatic, true));
-  expectConsistent (segmentOrDie (grid3, kDefaultRho, DimensionMode::Automatic, true));
+  expectConsistent (segmentOrDie (grid2, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, true));
+  expectConsistent (segmentOrDie (grid3, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, true));
   // Right triangles of a grid hold their circumcentre on an edge: no flow at all.
   for (const auto& c : r2.cells)
     EXPECT_EQ (c.flow_mask, 0);
@@ -165,7 +165,7 @@ TEST (Degenerate, CosphericalPoints)
   }
   const FlowResult r = segmentOrDie (sphere);
   expectConsistent (r);
-  const FlowResult full = segmentOrDie (sphere, kDefaultRho, DimensionMode::Automatic, true);
+  const FlowResult full = segmentOrDie (sphere, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, true);
   expectConsistent (full);
   EXPECT_GT (full.interior.inside_volume, 0.9 * 4.18879) << "the unit sphere encloses its volume";
   // A circle: every triangle is inscribed in the same circle.
@@ -212,7 +212,7 @@ TEST (Degenerate, AbsurdParametersAreRejected)
   for (double tolerance : {-0.1, std::nan (""), std::numeric_limits<double>::infinity ()})
   {
     FlowParameters params;
-    params.sampling_tolerance = tolerance;
+    params.merge.sampling_tolerance = tolerance;
     FlowResult bad;
     const Status s = runFlowSegmentation (pts, params, bad);
     EXPECT_FALSE (s.ok);
@@ -221,7 +221,7 @@ TEST (Degenerate, AbsurdParametersAreRejected)
   for (double ratio : {-1.0, 0.5, std::nan (""), std::numeric_limits<double>::infinity ()})
   {
     FlowParameters params;
-    params.stump_ratio = ratio;
+    params.merge.stump_ratio = ratio;
     FlowResult bad;
     const Status s = runFlowSegmentation (pts, params, bad);
     EXPECT_FALSE (s.ok);
@@ -231,27 +231,27 @@ TEST (Degenerate, AbsurdParametersAreRejected)
     for (bool size : {false, true})
     {
       FlowParameters params;
-      (size ? params.compact_size : params.compact_rho) = value;
+      (size ? params.merge.compact_size : params.merge.compact_rho) = value;
       FlowResult bad;
       const Status s = runFlowSegmentation (pts, params, bad);
       EXPECT_FALSE (s.ok);
       EXPECT_NE (s.message.find (size ? "compact size" : "compact rho"), std::string::npos) << s.message;
     }
   FlowResult r = segmentOrDie (pts);
-  EXPECT_FALSE (remergeFlowSegmentation (-2.0, r).ok);
+  EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (-2.0), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, -1.0), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, std::nan ("")), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, 0.5, 0.9), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, 0.5, 2.0, -0.5), r).ok);
   FlowResult empty;
-  EXPECT_FALSE (remergeFlowSegmentation (1.5, empty).ok);
+  EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5), empty).ok);
 }
 
 TEST (Degenerate, NonPlanarPointsForcedTo2DAreProjectedWithAWarning)
 {
   const auto pts = flowseg_test::randomPoints (200, 3, 9);
   FlowParameters params;
-  params.dimension = DimensionMode::Planar;
+  params.preparation.dimension = DimensionMode::Planar;
   FlowResult r;
   ASSERT_TRUE (runFlowSegmentation (pts, params, r).ok);
   EXPECT_EQ (r.dimension, 2);
@@ -263,7 +263,7 @@ TEST (Degenerate, InputsThatWouldExceedMemoryAreRefusedUpFront)
 {
   const auto pts = shapeSample ("snowman3d", 2000);
   FlowParameters params;
-  params.memory_limit = 1 << 20; // 1 MiB
+  params.execution.memory_limit = 1 << 20; // 1 MiB
   FlowResult r;
   const Status s = runFlowSegmentation (pts, params, r);
   EXPECT_FALSE (s.ok);
@@ -271,16 +271,16 @@ TEST (Degenerate, InputsThatWouldExceedMemoryAreRefusedUpFront)
   EXPECT_TRUE (r.cells.empty ());
   // 100M points would need about 300 GB: more than this machine (or CI) reports available.
   EXPECT_GT (estimateSegmentationMemory (100000000, 3), availableMemory ());
-  params.memory_limit = 0;
+  params.execution.memory_limit = 0;
   EXPECT_TRUE (runFlowSegmentation (pts, params, r).ok);
 }
 
 TEST (Degenerate, OnePointFarAway)
 {
   auto pts = shapeSample ("dumbbell3d", 1500);
-  const FlowResult near = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, true);
+  const FlowResult near = segmentOrDie (pts, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, true);
   pts.push_back (V (1e6, 1e6, 1e6));
-  const FlowResult far = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, true);
+  const FlowResult far = segmentOrDie (pts, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, true);
   expectConsistent (far);
   // The shape's interior is still found: the same inside volume within 1%.
   EXPECT_NEAR (far.interior.inside_volume, near.interior.inside_volume, 0.01 * near.interior.inside_volume);

@@ -229,7 +229,7 @@ TEST (Merging, LargerRhoNeverGivesMoreSegmentsAndBelowOneMergesNothing)
   {
     FlowResult r = segmentOrDie (shapeSample (name, 1200), 0.5);
     EXPECT_EQ (r.segments.size (), r.manifolds.size ()) << name;
-    ASSERT_TRUE (remergeFlowSegmentation (0.999, r).ok);
+    ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (0.999), r).ok);
     EXPECT_EQ (r.segments.size (), r.manifolds.size ()) << name;
     // Monotone without the compact pass (documented: with it, groups grow with rho, so a
     // candidate may no longer join two compact groups).
@@ -237,7 +237,7 @@ TEST (Merging, LargerRhoNeverGivesMoreSegmentsAndBelowOneMergesNothing)
     for (double rho : {1.0, 1.05, 1.1, 1.2, 1.4, 1.8, 2.5, 4.0, 10.0})
     {
       ASSERT_TRUE (remergeFlowSegmentation (
-          flowseg_test::mergeParameters (rho, kDefaultSamplingTolerance, kDefaultStumpRatio, 0.0), r).ok);
+          flowseg_test::mergeParameters (rho, flowseg_test::kDefaultMerge.sampling_tolerance, flowseg_test::kDefaultMerge.stump_ratio, 0.0), r).ok);
       EXPECT_LE (r.segments.size (), previous) << name << " rho " << rho;
       previous = r.segments.size ();
       checkPartition (r);
@@ -247,7 +247,7 @@ TEST (Merging, LargerRhoNeverGivesMoreSegmentsAndBelowOneMergesNothing)
     previous = r.manifolds.size ();
     for (double tolerance : {0.0, 0.1, 0.25, 0.5, 1.0, 2.0, 5.0})
     {
-      ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.05, tolerance, kDefaultStumpRatio, 0.0), r).ok);
+      ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.05, tolerance, flowseg_test::kDefaultMerge.stump_ratio, 0.0), r).ok);
       EXPECT_LE (r.segments.size (), previous) << name << " tolerance " << tolerance;
       previous = r.segments.size ();
       checkPartition (r);
@@ -261,7 +261,7 @@ TEST (Merging, RemergeWithTheNewParametersOffEqualsAFreshRunWithThePaperRule)
 {
   const auto pts = shapeSample ("animal3d", 1500);
   FlowResult fresh = segmentOrDie (pts, 1.3, DimensionMode::Automatic, true, 0.0, 0.0, 0.0);
-  FlowResult remerged = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, true);
+  FlowResult remerged = segmentOrDie (pts, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, true);
   ASSERT_TRUE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.3, 0.0, 0.0, 0.0), remerged).ok);
   ASSERT_EQ (remerged.segments.size (), fresh.segments.size ());
   for (std::size_t c = 0; c < fresh.cells.size (); ++c)
@@ -366,9 +366,9 @@ TEST (Merging, StumpsMoveOnlyThinConnectedCellsFromMuchThickerSegments)
   for (const Case& test : {Case{"animal3d", 3000, true}, Case{"hand2d", 1500, true}, Case{"animal3d", 1500, false}})
   {
     const auto pts = shapeSample (test.name, test.points);
-    const FlowResult plain = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, test.sided, kDefaultSamplingTolerance, 0.0);
-    const FlowResult stumps = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, test.sided, kDefaultSamplingTolerance, 2.0);
-    const FlowResult far = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, test.sided, kDefaultSamplingTolerance, 1e6);
+    const FlowResult plain = segmentOrDie (pts, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, test.sided, flowseg_test::kDefaultMerge.sampling_tolerance, 0.0);
+    const FlowResult stumps = segmentOrDie (pts, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, test.sided, flowseg_test::kDefaultMerge.sampling_tolerance, 2.0);
+    const FlowResult far = segmentOrDie (pts, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, test.sided, flowseg_test::kDefaultMerge.sampling_tolerance, 1e6);
     ASSERT_EQ (stumps.segments.size (), plain.segments.size ()) << test.name;
     // A segment is known by its maximum cell (segments are ordered by volume, which stumps change).
     std::map<int, int> by_maximum; // maximum cell -> segment in `stumps`

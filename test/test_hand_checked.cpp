@@ -90,7 +90,7 @@ TEST (HandChecked, SamplingToleranceWidensTheRuleBySpacings)
   const std::vector<V> pts = {V (0, -0.5, 0), V (0, 0.5, 0), V (-0.8, 0, 0), V (0.8, 0, 0)};
   const double R = 0.89 / 1.6, s = std::sqrt (0.89);
   const auto run = [&] (double rho, double tolerance) {
-    return segmentOrDie (pts, rho, DimensionMode::Automatic, false, tolerance, kDefaultStumpRatio, 0.0).segments.size ();
+    return segmentOrDie (pts, rho, DimensionMode::Automatic, false, tolerance, flowseg_test::kDefaultMerge.stump_ratio, 0.0).segments.size ();
   };
   const double at_one = (R - 0.5) / s; // rho 1: the tolerance alone must cover R - 0.5
   EXPECT_EQ (run (1.0, 0.999 * at_one), 2u);
@@ -99,14 +99,14 @@ TEST (HandChecked, SamplingToleranceWidensTheRuleBySpacings)
   EXPECT_EQ (run (1.05, 0.999 * at_105), 2u);
   EXPECT_EQ (run (1.05, 1.001 * at_105), 1u);
   // The default tolerance merges them at rho 1 already; rho < 1 merges nothing whatever the tolerance.
-  EXPECT_EQ (run (1.0, kDefaultSamplingTolerance), 1u);
+  EXPECT_EQ (run (1.0, flowseg_test::kDefaultMerge.sampling_tolerance), 1u);
   EXPECT_EQ (run (0.999, 100.0), 2u);
   // Scaling the sample scales radii and spacings alike: the same decisions.
   std::vector<V> big;
   for (const V& p : pts)
     big.push_back (1000.0 * p);
-  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 0.999 * at_one, kDefaultStumpRatio, 0.0).segments.size (), 2u);
-  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 1.001 * at_one, kDefaultStumpRatio, 0.0).segments.size (), 1u);
+  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 0.999 * at_one, flowseg_test::kDefaultMerge.stump_ratio, 0.0).segments.size (), 2u);
+  EXPECT_EQ (segmentOrDie (big, 1.0, DimensionMode::Automatic, false, 1.001 * at_one, flowseg_test::kDefaultMerge.stump_ratio, 0.0).segments.size (), 1u);
 }
 
 TEST (HandChecked, CompactPassMergesSegmentsNoBiggerThanBallsOfTheirSaddle)
@@ -119,12 +119,10 @@ TEST (HandChecked, CompactPassMergesSegmentsNoBiggerThanBallsOfTheirSaddle)
   const double R = 0.89 / 1.6, disc = 3.14159265358979323846 * 0.25, at_size = 0.4 / disc;
   const auto run = [&] (const std::vector<V>& sample, double compact_rho, double compact_size) {
     FlowParameters params;
-    params.rho = 1.0;
-    params.sampling_tolerance = 0.0;
-    params.stump_ratio = 0.0;
-    params.separate_interior = false;
-    params.compact_rho = compact_rho;
-    params.compact_size = compact_size;
+    params.merge = MergeParameters::paperRule (1.0);
+    params.interior.separate = false;
+    params.merge.compact_rho = compact_rho;
+    params.merge.compact_size = compact_size;
     FlowResult result;
     EXPECT_TRUE (runFlowSegmentation (sample, params, result).ok);
     return result.segments.size ();
@@ -141,10 +139,10 @@ TEST (HandChecked, CompactPassMergesSegmentsNoBiggerThanBallsOfTheirSaddle)
   EXPECT_EQ (run (big, 1.001 * R / 0.5, 1.001 * at_size), 1u);
   // rho < 1 merges nothing, whatever the compact pass.
   FlowParameters none;
-  none.rho = 0.999;
-  none.separate_interior = false;
-  none.compact_rho = 10.0;
-  none.compact_size = 100.0;
+  none.merge.rho = 0.999;
+  none.interior.separate = false;
+  none.merge.compact_rho = 10.0;
+  none.merge.compact_size = 100.0;
   FlowResult result;
   ASSERT_TRUE (runFlowSegmentation (pts, none, result).ok);
   EXPECT_EQ (result.segments.size (), 2u);

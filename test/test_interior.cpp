@@ -135,7 +135,7 @@ TEST (Interior, NoisySampleIsSmoothedAndStillSeparated)
   EXPECT_GT (noisy.interior.surface_variation, 0.04);
   EXPECT_GE (noisy.interior.smoothing_passes, 1);
   EXPECT_GT (agreement (noisy, [&] (const V& p) { return shape.contains (p); }), 0.97);
-  const FlowResult raw = segmentWith (pts, [] (FlowParameters& p) { p.denoising = Denoising::Off; });
+  const FlowResult raw = segmentWith (pts, [] (FlowParameters& p) { p.interior.denoising = Denoising::Off; });
   EXPECT_EQ (raw.interior.smoothing_passes, 0);
   EXPECT_GT (agreement (noisy, [&] (const V& p) { return shape.contains (p); }),
              agreement (raw, [&] (const V& p) { return shape.contains (p); }));
@@ -186,8 +186,7 @@ TEST (Interior, ViewpointMarksTheSpaceInFrontOfAScanOutside)
     return out / front;
   };
   const FlowResult with = segmentWith (pts, [&] (FlowParameters& p) {
-    p.use_viewpoint = true;
-    p.viewpoint = sensor;
+    p.interior.viewpoint = sensor;
   });
   EXPECT_GT (with.interior.ray_cells, 0u);
   EXPECT_GT (frontOutside (with), 0.99);
@@ -211,8 +210,7 @@ TEST (Interior, ViewpointOpensABowl)
     return out / volume;
   };
   const FlowResult with = segmentWith (pts, [] (FlowParameters& p) {
-    p.use_viewpoint = true;
-    p.viewpoint = V (0, 0, 1.5);
+    p.interior.viewpoint = V (0, 0, 1.5);
   });
   EXPECT_GT (bowlOutside (with), 0.99);
   const FlowResult without = segmentWith (pts);
@@ -224,6 +222,7 @@ TEST (Interior, OrientedNormalsAreUsed)
   const BlobShape shape = sampleShape ("dumbbell3d");
   const auto pts = sampleBoundary (shape, 3000, 2);
   FlowParameters params;
+  std::vector<V> normals;
   // Outward normals of the union of ellipsoids: the gradient of the nearest part's level set.
   for (const auto& p : pts)
   {
@@ -231,19 +230,19 @@ TEST (Interior, OrientedNormalsAreUsed)
     const V local = part.rotation.transpose () * (p - part.centre);
     V g (local.x () / (part.radii.x () * part.radii.x ()), local.y () / (part.radii.y () * part.radii.y ()),
          local.z () / (part.radii.z () * part.radii.z ()));
-    params.normals.push_back ((part.rotation * g).normalized ());
+    normals.push_back ((part.rotation * g).normalized ());
   }
   FlowResult r;
-  ASSERT_TRUE (runFlowSegmentation (pts, params, r).ok);
+  ASSERT_TRUE (runFlowSegmentation (pts, normals, params, r).ok);
   EXPECT_GT (agreement (r, [&] (const V& p) { return shape.contains (p); }), 0.99);
-  params.normals.pop_back ();
-  EXPECT_FALSE (runFlowSegmentation (pts, params, r).ok) << "normals must match the points";
+  normals.pop_back ();
+  EXPECT_FALSE (runFlowSegmentation (pts, normals, params, r).ok) << "normals must match the points";
 }
 
 TEST (Interior, SwitchedOffGivesTheRawSegmentation)
 {
   const auto pts = shapeSample ("hand2d", 800);
-  const FlowResult r = segmentWith (pts, [] (FlowParameters& p) { p.separate_interior = false; });
+  const FlowResult r = segmentWith (pts, [] (FlowParameters& p) { p.interior.separate = false; });
   EXPECT_FALSE (r.interior.computed);
   EXPECT_EQ (r.features.size (), r.segments.size ());
   for (const auto& c : r.cells)

@@ -79,9 +79,9 @@ TEST (ParallelCore, ThreadCountDoesNotChangeTheResult)
   const auto shape = sampleShape ("animal3d");
   const auto points = sampleBoundary (shape, 12000, 3); // above the parallel triangulation's threshold
   FlowParameters sequential;
-  sequential.threads = 1;
+  sequential.execution.threads = 1;
   FlowParameters parallel = sequential;
-  parallel.threads = 2;
+  parallel.execution.threads = 2;
   FlowResult a, b;
   ASSERT_TRUE (runFlowSegmentation (points, sequential, a));
   ASSERT_TRUE (runFlowSegmentation (points, parallel, b));
@@ -105,9 +105,10 @@ TEST (ParallelCore, ParallelInsertionGivesTheSequentialCells)
   const auto points = sampleBoundary (sampleShape ("snowman3d"), 20000, 4);
   const core::WorkerThreads two (2);
   std::vector<FlowCell> sequential, parallel;
-  std::string error;
-  ASSERT_TRUE (core::triangulate3D (points, sequential, error, core::Insertion::Sequential)) << error;
-  ASSERT_TRUE (core::triangulate3D (points, parallel, error, core::Insertion::Parallel)) << error;
+  const Status s = core::triangulate3D (points, sequential, core::Insertion::Sequential);
+  ASSERT_TRUE (s) << s.message;
+  const Status p = core::triangulate3D (points, parallel, core::Insertion::Parallel);
+  ASSERT_TRUE (p) << p.message;
   ASSERT_EQ (sequential.size (), parallel.size ());
   for (std::size_t k = 0; k < sequential.size (); ++k)
   {

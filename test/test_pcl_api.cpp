@@ -41,9 +41,9 @@ TYPED_TEST (FlowSegmentationTyped, SegmentsCoverEveryPointOnce)
   auto cloud = makeCloud<TypeParam> (shapeSample ("dumbbell3d", 2000));
   typename pcl::FlowSegmentation<TypeParam>::Ptr seg (new pcl::FlowSegmentation<TypeParam>);
   seg->setInputCloud (cloud);
-  EXPECT_EQ (seg->getRho (), pcl_flowseg::kDefaultRho);
-  EXPECT_EQ (seg->getSamplingTolerance (), pcl_flowseg::kDefaultSamplingTolerance);
-  EXPECT_EQ (seg->getStumpRatio (), pcl_flowseg::kDefaultStumpRatio);
+  EXPECT_EQ (seg->getRho (), pcl_flowseg::MergeParameters ().rho);
+  EXPECT_EQ (seg->getSamplingTolerance (), pcl_flowseg::MergeParameters ().sampling_tolerance);
+  EXPECT_EQ (seg->getStumpRatio (), pcl_flowseg::MergeParameters ().stump_ratio);
   EXPECT_TRUE (seg->getSeparateInterior ());
   seg->setSeparateInterior (false); // the raw segmentation covers every point
   std::vector<pcl::PointIndices> segments;
@@ -218,6 +218,73 @@ TEST (FlowSegmentation, RemergeEqualsAFreshRun)
   ASSERT_EQ (sa.size (), sb.size ());
   for (std::size_t k = 0; k < sa.size (); ++k)
     EXPECT_EQ (sa[k].indices, sb[k].indices);
+}
+
+namespace {
+void
+expectSameMerge (const pcl_flowseg::MergeParameters& a, const pcl_flowseg::MergeParameters& b)
+{
+  EXPECT_EQ (a.rho, b.rho);
+  EXPECT_EQ (a.sampling_tolerance, b.sampling_tolerance);
+  EXPECT_EQ (a.stump_ratio, b.stump_ratio);
+  EXPECT_EQ (a.compact_rho, b.compact_rho);
+  EXPECT_EQ (a.compact_size, b.compact_size);
+}
+} // namespace
+
+TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
+{
+  pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  seg.setRho (1.3);
+  seg.setSamplingTolerance (0.25);
+  seg.setStumpRatio (3.0);
+  seg.setCompactRho (1.4);
+  seg.setCompactSize (1.5);
+  seg.setDimension (2);
+  seg.setPlanarTolerance (1e-6);
+  seg.setSeparateInterior (true);
+  seg.setDenoising (pcl_flowseg::Denoising::Off);
+  seg.setFeatureSide (pcl_flowseg::FeatureSide::Both);
+  seg.setNumberOfThreads (1);
+  seg.setMemoryLimit (std::size_t (1) << 33);
+  const pcl_flowseg::FlowParameters p = seg.getParameters ();
+  EXPECT_EQ (p.merge.rho, 1.3);
+  EXPECT_EQ (p.merge.sampling_tolerance, 0.25);
+  EXPECT_EQ (p.merge.stump_ratio, 3.0);
+  EXPECT_EQ (p.merge.compact_rho, 1.4);
+  EXPECT_EQ (p.merge.compact_size, 1.5);
+  EXPECT_EQ (p.preparation.dimension, pcl_flowseg::DimensionMode::Planar);
+  EXPECT_EQ (p.preparation.planar_tolerance, 1e-6);
+  EXPECT_EQ (p.interior.denoising, pcl_flowseg::Denoising::Off);
+  EXPECT_EQ (p.features, pcl_flowseg::FeatureSide::Both);
+  EXPECT_EQ (p.execution.threads, 1u);
+  EXPECT_EQ (p.execution.memory_limit, std::size_t (1) << 33);
+
+  pcl::FlowSegmentation<pcl::PointXYZ> other;
+  other.setParameters (p);
+  EXPECT_EQ (other.getRho (), 1.3);
+  EXPECT_EQ (other.getDimension (), 2);
+  EXPECT_EQ (other.getFeatureSide (), pcl_flowseg::FeatureSide::Both);
+  EXPECT_EQ (other.getMemoryLimit (), std::size_t (1) << 33);
+
+  auto cloud = makeCloud<pcl::PointXYZ> (shapeSample ("hand2d", 600));
+  cloud->sensor_origin_ = Eigen::Vector4f (0.5f, 9.0f, 0.0f, 0.0f);
+  other.setInputCloud (cloud);
+  other.setUseSensorOrigin (true);
+  std::vector<pcl::PointIndices> segments;
+  ASSERT_TRUE (other.segment (segments)) << other.getLastError ();
+  const pcl_flowseg::FlowParameters& used = other.getResult ().parameters;
+  expectSameMerge (used.merge, p.merge);
+  EXPECT_EQ (used.preparation.dimension, p.preparation.dimension);
+  EXPECT_EQ (used.features, p.features);
+  ASSERT_TRUE (used.interior.viewpoint.has_value ());
+  EXPECT_EQ (*used.interior.viewpoint, Eigen::Vector3d (0.5, 9.0, 0.0));
+
+  // remerge takes the whole merge group, and the result records it.
+  const pcl_flowseg::MergeParameters paper = pcl_flowseg::MergeParameters::paperRule (1.8);
+  ASSERT_TRUE (other.remerge (paper, segments));
+  expectSameMerge (other.getResult ().parameters.merge, paper);
+  expectSameMerge (other.getMergeParameters (), paper);
 }
 
 TEST (FlowSegmentation, ProgressIsReportedInOrder)

@@ -19,6 +19,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <unistd.h>
 
@@ -235,13 +236,19 @@ TEST (ResultWriter, SegmentationOutputsAreWellFormed)
 
   RunInfo info;
   info.input = "hand \"2d\".pcd";
-  info.rho = 1.3;
   ASSERT_TRUE (writeSegmentationJson (dir.file ("r.json"), seg.getResult (), info).ok);
   const std::string json = slurp (dir.file ("r.json"));
   EXPECT_NE (json.find ("\"segment_count\": " + std::to_string (segments.size ())), std::string::npos);
   EXPECT_NE (json.find ("\"timings_ms\""), std::string::npos);
   EXPECT_NE (json.find ("hand \\\"2d\\\".pcd"), std::string::npos);
   EXPECT_NE (json.find ("\"non_finite_points\": 1"), std::string::npos);
+  // The parameters come from the result itself, every group of them.
+  std::ostringstream rho;
+  rho << std::setprecision (10) << seg.getResult ().parameters.merge.rho;
+  EXPECT_NE (json.find ("\"rho\": " + rho.str () + ",\n"), std::string::npos);
+  EXPECT_NE (json.find ("\"parameters\": {\"preparation\": {\"dimension\": \"auto\""), std::string::npos);
+  EXPECT_NE (json.find ("\"merge\": {\"rho\": " + rho.str () + ", \"sampling_tolerance\""), std::string::npos);
+  EXPECT_NE (json.find ("\"interior\": {\"separate\": false, \"denoising\": \"auto\", \"viewpoint\": null}"), std::string::npos);
   EXPECT_EQ (std::count (json.begin (), json.end (), '{'), std::count (json.begin (), json.end (), '}'));
   EXPECT_EQ (json.find ("nan"), std::string::npos);
   EXPECT_EQ (json.find (": inf"), std::string::npos);

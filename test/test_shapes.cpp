@@ -71,7 +71,7 @@ TEST_P (Dumbbell, DefaultRhoSeparatesTheTwoBulbs)
 {
   const std::string name = GetParam ();
   // The whole pipeline: the bulbs must come out as separate interior features.
-  const FlowResult r = segmentOrDie (shapeSample (name, name == "dumbbell2d" ? 1500 : 4000), kDefaultRho,
+  const FlowResult r = segmentOrDie (shapeSample (name, name == "dumbbell2d" ? 1500 : 4000), flowseg_test::kDefaultMerge.rho,
                                      DimensionMode::Automatic, true);
   const V left (-2, 0, 0), right (2, 0, 0);
   const int cl = cellContaining (r, left), cr = cellContaining (r, right);
@@ -94,7 +94,7 @@ INSTANTIATE_TEST_SUITE_P (Shapes, Dumbbell, ::testing::Values ("dumbbell2d", "du
 TEST (Shapes, SnowmanBallsAreSeparateSegments)
 {
   const BlobShape shape = sampleShape ("snowman3d");
-  const FlowResult r = segmentOrDie (sampleBoundary (shape, 4000, 3), kDefaultRho, DimensionMode::Automatic, true);
+  const FlowResult r = segmentOrDie (sampleBoundary (shape, 4000, 3), flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, true);
   std::vector<int> seg;
   for (const auto& part : shape.parts)
   {
@@ -120,13 +120,13 @@ TEST (Shapes, StumpsBringTheAnimalsPointLabelsCloserToItsParts)
     truth.push_back (shape.nearestPart (p));
   const std::vector<double> ones (pts.size (), 1.0);
   auto error = [&] (double stump_ratio) {
-    const FlowResult r = segmentOrDie (pts, kDefaultRho, DimensionMode::Automatic, true, kDefaultSamplingTolerance, stump_ratio);
+    const FlowResult r = segmentOrDie (pts, flowseg_test::kDefaultMerge.rho, DimensionMode::Automatic, true, flowseg_test::kDefaultMerge.sampling_tolerance, stump_ratio);
     std::vector<int> labels;
     for (std::uint32_t l : r.point_labels)
       labels.push_back (l == kNoSegment ? -1 : static_cast<int> (l));
     return randIndexError (ones, labels, truth);
   };
-  const double without = error (0.0), with = error (kDefaultStumpRatio);
+  const double without = error (0.0), with = error (flowseg_test::kDefaultMerge.stump_ratio);
   EXPECT_LT (without, 0.05);
   EXPECT_LT (with, 0.6 * without) << "without stumps " << without << ", with " << with;
 }

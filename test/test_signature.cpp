@@ -61,12 +61,12 @@ TEST (Signature, FeaturesOfTheAnimal)
 TEST (Signature, RequiresInteriorAndSaneSignificance)
 {
   FlowParameters params;
-  params.separate_interior = false;
+  params.interior.separate = false;
   FlowResult r;
   ASSERT_TRUE (runFlowSegmentation (flowseg_test::shapeSample ("snowman3d", 1000), params, r).ok);
   Signature s;
   EXPECT_FALSE (signatureFromSegmentation (r, 0.02, s).ok);
-  params.separate_interior = true;
+  params.interior.separate = true;
   ASSERT_TRUE (runFlowSegmentation (flowseg_test::shapeSample ("snowman3d", 1000), params, r).ok);
   EXPECT_FALSE (signatureFromSegmentation (r, -0.1, s).ok);
   EXPECT_FALSE (signatureFromSegmentation (r, 1.0, s).ok);

@@ -18,6 +18,9 @@
 
 namespace flowseg_test {
 
+/** The library's default merge group, for tests that vary one of its values. */
+constexpr pcl_flowseg::MergeParameters kDefaultMerge{};
+
 /** Boundary sample of one of the shipped procedural shapes. */
 inline std::vector<Eigen::Vector3d>
 shapeSample (const std::string& name, std::size_t count, std::uint32_t seed = 7)
@@ -37,24 +40,35 @@ randomPoints (std::size_t count, int dimension, std::uint32_t seed)
   return pts;
 }
 
+/** A merge group: \a rho and the given values, the library's defaults for the others. */
+inline pcl_flowseg::MergeParameters
+mergeParameters (double rho, double sampling_tolerance = kDefaultMerge.sampling_tolerance,
+                 double stump_ratio = kDefaultMerge.stump_ratio,
+                 double compact_size = kDefaultMerge.compact_size)
+{
+  pcl_flowseg::MergeParameters params;
+  params.rho = rho;
+  params.sampling_tolerance = sampling_tolerance;
+  params.stump_ratio = stump_ratio;
+  params.compact_size = compact_size;
+  return params;
+}
+
 /** Runs the core and fails the calling test when it does not succeed. By default the paper's raw
   * segmentation of the whole convex hull (no interior/exterior separation): the structural
   * tests check the flow itself. The merging has the default sampling tolerance, stump ratio and
   * compact size unless given (all 0: the paper's segments exactly). */
 inline pcl_flowseg::FlowResult
-segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = pcl_flowseg::kDefaultRho,
+segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = kDefaultMerge.rho,
               pcl_flowseg::DimensionMode mode = pcl_flowseg::DimensionMode::Automatic, bool separate_interior = false,
-              double sampling_tolerance = pcl_flowseg::kDefaultSamplingTolerance,
-              double stump_ratio = pcl_flowseg::kDefaultStumpRatio,
-              double compact_size = pcl_flowseg::kDefaultCompactSize)
+              double sampling_tolerance = kDefaultMerge.sampling_tolerance,
+              double stump_ratio = kDefaultMerge.stump_ratio,
+              double compact_size = kDefaultMerge.compact_size)
 {
   pcl_flowseg::FlowParameters params;
-  params.rho = rho;
-  params.sampling_tolerance = sampling_tolerance;
-  params.stump_ratio = stump_ratio;
-  params.compact_size = compact_size;
-  params.dimension = mode;
-  params.separate_interior = separate_interior;
+  params.merge = mergeParameters (rho, sampling_tolerance, stump_ratio, compact_size);
+  params.preparation.dimension = mode;
+  params.interior.separate = separate_interior;
   pcl_flowseg::FlowResult result;
   const auto status = pcl_flowseg::runFlowSegmentation (pts, params, result);
   if (!status.ok)
@@ -62,20 +76,6 @@ segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = pcl_flowseg:
     ADD_FAILURE () << "segmentation failed: " << status.message;
   }
   return result;
-}
-
-/** Merge parameters for remergeFlowSegmentation. */
-inline pcl_flowseg::FlowParameters
-mergeParameters (double rho, double sampling_tolerance = pcl_flowseg::kDefaultSamplingTolerance,
-                 double stump_ratio = pcl_flowseg::kDefaultStumpRatio,
-                 double compact_size = pcl_flowseg::kDefaultCompactSize)
-{
-  pcl_flowseg::FlowParameters params;
-  params.rho = rho;
-  params.sampling_tolerance = sampling_tolerance;
-  params.stump_ratio = stump_ratio;
-  params.compact_size = compact_size;
-  return params;
 }
 
 /** True when the two label vectors describe the same partition (labels may be renamed). */

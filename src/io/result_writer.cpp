@@ -66,6 +66,33 @@ quoted (const std::string& text)
   return s + "\"";
 }
 
+const char*
+sideName (FeatureSide side)
+{
+  return side == FeatureSide::Interior ? "interior" : side == FeatureSide::Exterior ? "exterior" : "both";
+}
+
+/** The parameters of a result as one JSON object, in the groups of FlowParameters. */
+std::string
+parametersJson (const FlowParameters& p)
+{
+  const DimensionMode d = p.preparation.dimension;
+  const Denoising n = p.interior.denoising;
+  std::string s = "{\"preparation\": {\"dimension\": ";
+  s += d == DimensionMode::Automatic ? "\"auto\"" : d == DimensionMode::Planar ? "2" : "3";
+  s += ", \"planar_tolerance\": " + num (p.preparation.planar_tolerance) + "}";
+  s += ", \"merge\": {\"rho\": " + num (p.merge.rho) + ", \"sampling_tolerance\": " + num (p.merge.sampling_tolerance) +
+       ", \"stump_ratio\": " + num (p.merge.stump_ratio) + ", \"compact_rho\": " + num (p.merge.compact_rho) +
+       ", \"compact_size\": " + num (p.merge.compact_size) + "}";
+  s += ", \"interior\": {\"separate\": " + std::string (p.interior.separate ? "true" : "false") + ", \"denoising\": ";
+  s += n == Denoising::Automatic ? "\"auto\"" : n == Denoising::Off ? "\"off\"" : "\"always\"";
+  s += ", \"viewpoint\": " + (p.interior.viewpoint ? vec (*p.interior.viewpoint, 3) : std::string ("null")) + "}";
+  s += ", \"features\": \"" + std::string (sideName (p.features)) + "\"";
+  s += ", \"execution\": {\"threads\": " + std::to_string (p.execution.threads) +
+       ", \"memory_limit\": " + std::to_string (p.execution.memory_limit) + "}}";
+  return s;
+}
+
 Status
 finish (std::ofstream& out)
 {
@@ -128,7 +155,8 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
     out << "{\n";
     out << "  \"input\": " << quoted (info.input) << ",\n";
     out << "  \"dimension\": " << d << ",\n";
-    out << "  \"rho\": " << num (info.rho) << ",\n";
+    out << "  \"rho\": " << num (r.parameters.merge.rho) << ",\n";
+    out << "  \"parameters\": " << parametersJson (r.parameters) << ",\n";
     out << "  \"points\": " << r.input_points << ",\n";
     out << "  \"non_finite_points\": " << r.non_finite_points << ",\n";
     out << "  \"duplicate_points\": " << r.duplicate_points << ",\n";
@@ -141,7 +169,7 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
     for (std::size_t i = 0; i < r.point_labels.size (); ++i)
       unlabelled += r.point_labels[i] == kNoSegment && r.point_to_vertex[i] >= 0;
     out << "  \"unlabelled_points\": " << unlabelled << ",\n";
-    const char* side = r.feature_side == FeatureSide::Interior ? "interior" : r.feature_side == FeatureSide::Exterior ? "exterior" : "both";
+    const char* side = sideName (r.parameters.features);
     out << "  \"features\": {\"side\": \"" << (r.interior.computed ? side : "all") << "\", \"segments\": [";
     for (std::size_t k = 0; k < r.features.size (); ++k)
       out << (k ? ", " : "") << r.features[k];

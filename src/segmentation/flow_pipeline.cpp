@@ -1,24 +1,23 @@
 /*
- * pcl_flowseg - the compiled core: preparation, Delaunay, flow, merging, per-point labels.
+ * pcl_flowseg - the flow segmentation pipeline: preparation, Delaunay, flow, stable manifolds and
+ * interior, merging, per-point labels; each stage timed.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 
-#include "core/geometry/cell_geometry.h"
 #include "core/delaunay/delaunay_cells.h"
+#include "core/flow/manifold_summary.h"
+#include "core/flow/stable_manifolds.h"
 #include "core/interior/interior_labelling.h"
-#include "core/support/parallel.h"
-#include "core/preparation/point_preparation.h"
 #include "core/labels/point_labels.h"
 #include "core/merging/manifold_merging.h"
-#include "core/flow/stable_manifolds.h"
+#include "core/preparation/point_preparation.h"
+#include "core/support/parallel.h"
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
-#include <cmath>
 #include <exception>
-#include <limits>
+#include <fstream>
 #include <new>
 
 namespace pcl_flowseg {
@@ -32,56 +31,6 @@ millisecondsSince (Clock::time_point start)
   return std::chrono::duration<double, std::milli> (Clock::now () - start).count ();
 }
 
-/** Stable manifolds as FlowSegments, with their maxima and statistics. */
-void
-buildManifolds (const core::StableManifolds& sm, FlowResult& result)
-{
-  const int dim = result.dimension;
-  result.maxima.clear ();
-  for (int c : sm.maxima_cells)
-  {
-    FlowMaximum m;
-    m.cell = c;
-    m.height = result.cells[static_cast<std::size_t> (c)].squared_radius;
-    m.location = core::cellCircumcentre (result.vertices, result.cells[static_cast<std::size_t> (c)], dim);
-    result.maxima.push_back (m);
-  }
-  const int count = static_cast<int> (sm.maxima_cells.size ()) + (sm.has_infinity ? 1 : 0);
-  std::vector<int> manifold_of_cell (result.cells.size ());
-  for (std::size_t c = 0; c < result.cells.size (); ++c)
-    manifold_of_cell[c] = result.cells[c].manifold;
-  result.manifolds = core::summariseCells (result.cells, manifold_of_cell, count);
-  for (std::size_t k = 0; k < result.maxima.size (); ++k)
-  {
-    result.manifolds[k].maximum = result.maxima[k];
-    result.manifolds[k].maxima = {static_cast<int> (k)};
-  }
-  if (sm.has_infinity)
-  {
-    FlowSegment& inf = result.manifolds.back ();
-    inf.flows_to_infinity = true;
-    inf.maximum.height = std::numeric_limits<double>::infinity ();
-  }
-  result.manifold_adjacency = core::highestSharedFacets (result, manifold_of_cell);
-}
-
-/** Why the merge parameters are unusable, or empty when they are fine. */
-std::string
-mergeParameterProblem (const FlowParameters& params)
-{
-  if (!std::isfinite (params.rho) || params.rho <= 0.0)
-    return "rho must be a finite number > 0, got " + std::to_string (params.rho);
-  if (!std::isfinite (params.sampling_tolerance) || params.sampling_tolerance < 0.0)
-    return "the sampling tolerance must be a finite number >= 0, got " + std::to_string (params.sampling_tolerance);
-  if (!std::isfinite (params.stump_ratio) || (params.stump_ratio != 0.0 && params.stump_ratio < 1.0))
-    return "the stump ratio must be 0 (off) or a finite number >= 1, got " + std::to_string (params.stump_ratio);
-  if (!std::isfinite (params.compact_rho) || params.compact_rho <= 0.0)
-    return "the compact rho must be a finite number > 0, got " + std::to_string (params.compact_rho);
-  if (!std::isfinite (params.compact_size) || params.compact_size < 0.0)
-    return "the compact size must be a finite number >= 0, got " + std::to_string (params.compact_size);
-  return std::string ();
-}
-
 Status
 failure (FlowResult& result, const std::string& message)
 {
@@ -90,11 +39,193 @@ failure (FlowResult& result, const std::string& message)
   result.input_points = n;
   return Status::error (message);
 }
+
+/** Refuses, before any work, an input whose estimated need exceeds the memory allowed. */
+Status
+checkMemory (std::size_t points, const FlowParameters& params)
+{
+  const std::size_t limit = params.execution.memory_limit ? params.execution.memory_limit : availableMemory ();
+  const int dimension = params.preparation.dimension == DimensionMode::Planar ? 2 : 3;
+  const std::size_t need = estimateSegmentationMemory (points, dimension);
+  if (limit == 0 || need <= limit)
+    return Status::success ();
+  char message[256];
+  std::snprintf (message, sizeof (message),
+                 "%zu points need about %.1f GiB to segment, more than the %.1f GiB available: refused before starting",
+                 points, need / 1073741824.0, limit / 1073741824.0);
+  return Status::error (message);
+}
+
+/** One run of the pipeline: its input, parameters and result. */
+struct Run
+{
+  const std::vector<Eigen::Vector3d>& points;
+  const std::vector<Eigen::Vector3d>& normals;
+  const FlowParameters& params;
+  FlowResult& result;
+  const ProgressCallback& progress;
+
+  void
+  report (const char* stage, double fraction) const
+  {
+    if (progress)
+      progress (stage, fraction);
+  }
+};
+
+/** Finite filter, duplicates, dimension: the vertices of the triangulation. */
+Status
+prepareStage (const Run& run, core::PreparedPoints& prepared)
+{
+  const auto start = Clock::now ();
+  FlowResult& result = run.result;
+  if (const Status s = core::preparePoints (run.points, run.params.preparation, prepared, result.warnings); !s)
+    return s;
+  result.dimension = prepared.dimension;
+  result.non_finite_points = prepared.non_finite;
+  result.duplicate_points = prepared.duplicates;
+  result.point_to_vertex = std::move (prepared.point_to_vertex);
+  result.vertices = std::move (prepared.vertices);
+  result.timings.preparation_ms = millisecondsSince (start);
+  return Status::success ();
+}
+
+Status
+delaunayStage (const Run& run, const core::PreparedPoints& prepared)
+{
+  const auto start = Clock::now ();
+  FlowResult& result = run.result;
+  const Status s = result.dimension == 2 ? core::triangulate2D (prepared.planar, result.cells)
+                                         : core::triangulate3D (result.vertices, result.cells);
+  result.timings.delaunay_ms = millisecondsSince (start);
+  return s;
+}
+
+/** The flow relation (exact predicates), circumradii, volumes and centroids of the cells. */
+void
+flowStage (const core::PreparedPoints& prepared, FlowResult& result)
+{
+  const auto start = Clock::now ();
+  if (result.dimension == 2)
+    core::computeFlowRelation2D (prepared.planar, result.cells);
+  else
+    core::computeFlowRelation3D (result.vertices, result.cells);
+  const int facets = result.dimension + 1;
+  core::parallelFor (result.cells.size (), [&] (std::size_t k) {
+    FlowCell& cell = result.cells[k];
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+    for (int i = 0; i < facets; ++i)
+      sum += result.vertices[static_cast<std::size_t> (cell.vertices[i])];
+    cell.centroid = sum / facets;
+  });
+  result.timings.flow_ms = millisecondsSince (start);
+}
+
+/** The strengthened flow, its maxima and stable manifolds; writes cells' manifold and successor. */
+void
+manifoldStage (FlowResult& result, std::vector<std::string>& warnings)
+{
+  const auto start = Clock::now ();
+  const core::StableManifolds sm = core::computeStableManifolds (result.cells, result.dimension);
+  result.cycle_breaks = sm.cycle_breaks;
+  if (sm.cycle_breaks > 0)
+    warnings.push_back (std::to_string (sm.cycle_breaks) +
+                        " cell(s) not ordered by the flow (degenerate input): resolved by height");
+  core::describeManifolds (sm, result);
+  result.timings.manifolds_ms = millisecondsSince (start);
+}
+
+/** The per-vertex normals of the triangulation's vertices (the first copy of a duplicate wins). */
+std::vector<Eigen::Vector3d>
+vertexNormals (const Run& run)
+{
+  std::vector<Eigen::Vector3d> normals;
+  if (run.normals.empty ())
+    return normals;
+  const FlowResult& result = run.result;
+  normals.assign (result.vertices.size (), Eigen::Vector3d::Zero ());
+  for (std::size_t i = result.point_to_vertex.size (); i-- > 0;)
+    if (result.point_to_vertex[i] >= 0)
+      normals[static_cast<std::size_t> (result.point_to_vertex[i])] = run.normals[i];
+  return normals;
+}
+
+/** Interior/exterior labelling of the cells (writes cells' inside flags and result.warnings). */
+void
+interiorStage (const Run& run)
+{
+  if (!run.params.interior.separate)
+    return;
+  const auto start = Clock::now ();
+  FlowResult& result = run.result;
+  core::labelInterior (result, run.params.interior, vertexNormals (run));
+  const InteriorReport& in = result.interior;
+  if (!in.closed)
+    result.warnings.push_back ("the interior/exterior boundary is not closed");
+  else if (!in.manifold)
+    result.warnings.push_back ("the interior/exterior boundary has " + std::to_string (in.nonmanifold_edges) +
+                               " non-manifold edge(s) and " + std::to_string (in.nonmanifold_vertices) +
+                               " non-manifold vertex(es)");
+  if (in.inside_cells == 0)
+    result.warnings.push_back ("no cell was labelled inside: the sample may not enclose a volume (open scan, hole?)");
+  result.timings.interior_ms = millisecondsSince (start);
+}
+
+/** The stable manifolds and the interior read the same cells and write different fields of them:
+  * they run side by side. Warnings come in stage order whatever the timing. */
+void
+manifoldsAndInteriorStage (const Run& run)
+{
+  run.report (run.params.interior.separate ? "manifolds and interior" : "manifolds", 0.6);
+  std::vector<std::string> manifold_warnings;
+  const std::size_t earlier_warnings = run.result.warnings.size ();
+  core::runSideBySide ([&] () { manifoldStage (run.result, manifold_warnings); }, [&] () { interiorStage (run); });
+  run.result.warnings.insert (run.result.warnings.begin () + static_cast<std::ptrdiff_t> (earlier_warnings),
+                              manifold_warnings.begin (), manifold_warnings.end ());
+}
+
+/** Merging and per-point labels, timed: the end of a run and the whole of a remerge. */
+void
+mergeAndLabelStages (const MergeParameters& merge, FlowResult& result, const Run* run)
+{
+  if (run)
+    run->report ("merge", 0.8);
+  auto start = Clock::now ();
+  core::mergeManifolds (merge, result);
+  result.timings.merge_ms = millisecondsSince (start);
+  if (run)
+    run->report ("labels", 0.9);
+  start = Clock::now ();
+  core::labelPoints (result);
+  result.timings.labels_ms = millisecondsSince (start);
+}
+
+Status
+runStages (const Run& run)
+{
+  const core::WorkerThreads workers (run.params.execution.threads);
+  const auto start = Clock::now ();
+  run.report ("preparation", 0.0);
+  core::PreparedPoints prepared;
+  if (const Status s = prepareStage (run, prepared); !s)
+    return s;
+  run.report ("delaunay", 0.05);
+  if (const Status s = delaunayStage (run, prepared); !s)
+    return s;
+  run.report ("flow", 0.5);
+  flowStage (prepared, run.result);
+  manifoldsAndInteriorStage (run);
+  mergeAndLabelStages (run.params.merge, run.result, &run);
+  run.result.timings.total_ms = millisecondsSince (start);
+  run.report ("done", 1.0);
+  return Status::success ();
+}
 } // namespace
 
 std::size_t
 estimateSegmentationMemory (std::size_t points, int dimension)
 {
+  // Measured peaks (docs/measurements.md): about 3 KiB per point in 3D, 1 KiB in 2D.
   return points * (dimension == 2 ? 1024u : 3072u);
 }
 
@@ -112,156 +243,42 @@ availableMemory ()
 }
 
 Status
-remergeFlowSegmentation (double rho, FlowResult& result)
+remergeFlowSegmentation (const MergeParameters& merge, FlowResult& result)
 {
-  FlowParameters params;
-  params.rho = rho;
-  return remergeFlowSegmentation (params, result);
-}
-
-Status
-remergeFlowSegmentation (const FlowParameters& params, FlowResult& result)
-{
-  if (const std::string problem = mergeParameterProblem (params); !problem.empty ())
-    return Status::error (problem);
+  if (const Status s = checkMergeParameters (merge); !s)
+    return s;
   if (result.cells.empty ())
     return Status::error ("no flow segmentation to merge: run runFlowSegmentation first");
-  const auto start = Clock::now ();
-  core::mergeManifolds (params, result);
-  result.timings.merge_ms = millisecondsSince (start);
-  const auto labels = Clock::now ();
-  core::labelPoints (result);
-  result.timings.labels_ms = millisecondsSince (labels);
+  result.parameters.merge = merge;
+  mergeAndLabelStages (merge, result, nullptr);
   return Status::success ();
 }
 
 Status
-runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParameters& params,
-                     FlowResult& result, const ProgressCallback& progress)
+runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const FlowParameters& params, FlowResult& result,
+                     const ProgressCallback& progress)
+{
+  return runFlowSegmentation (points, std::vector<Eigen::Vector3d> (), params, result, progress);
+}
+
+Status
+runFlowSegmentation (const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
+                     const FlowParameters& params, FlowResult& result, const ProgressCallback& progress)
 {
   result = FlowResult ();
   result.input_points = points.size ();
-  if (const std::string problem = mergeParameterProblem (params); !problem.empty ())
-    return failure (result, problem);
-  if (!std::isfinite (params.planar_tolerance) || params.planar_tolerance < 0.0)
-    return failure (result, "planar tolerance must be a finite number >= 0");
-  if (!params.normals.empty () && params.normals.size () != points.size ())
-    return failure (result, "normals: " + std::to_string (params.normals.size ()) + " given for " +
+  if (const Status s = checkParameters (params); !s)
+    return failure (result, s.message);
+  if (!normals.empty () && normals.size () != points.size ())
+    return failure (result, "normals: " + std::to_string (normals.size ()) + " given for " +
                                 std::to_string (points.size ()) + " points");
-  if (params.use_viewpoint && !params.viewpoint.allFinite ())
-    return failure (result, "the viewpoint has non-finite coordinates");
-  {
-    const std::size_t limit = params.memory_limit ? params.memory_limit : availableMemory ();
-    const int dim = params.dimension == DimensionMode::Planar ? 2 : 3;
-    const std::size_t need = estimateSegmentationMemory (points.size (), dim);
-    if (limit > 0 && need > limit)
-    {
-      char message[256];
-      std::snprintf (message, sizeof (message),
-                     "%zu points need about %.1f GiB to segment, more than the %.1f GiB available: refused before starting",
-                     points.size (), need / 1073741824.0, limit / 1073741824.0);
-      return failure (result, message);
-    }
-  }
-  auto report = [&] (const char* stage, double fraction) {
-    if (progress)
-      progress (stage, fraction);
-  };
-
+  if (const Status s = checkMemory (points.size (), params); !s)
+    return failure (result, s.message);
+  result.parameters = params;
   try
   {
-    const core::WorkerThreads workers (params.threads);
-    const auto start = Clock::now ();
-    report ("preparation", 0.0);
-    core::PreparedPoints prepared;
-    std::string error;
-    if (!core::preparePoints (points, params, prepared, result.warnings, error))
-      return failure (result, error);
-    result.dimension = prepared.dimension;
-    result.non_finite_points = prepared.non_finite;
-    result.duplicate_points = prepared.duplicates;
-    result.point_to_vertex = std::move (prepared.point_to_vertex);
-    result.vertices = std::move (prepared.vertices);
-    result.timings.preparation_ms = millisecondsSince (start);
-
-    report ("delaunay", 0.05);
-    auto stage = Clock::now ();
-    const bool ok = result.dimension == 2 ? core::triangulate2D (prepared.planar, result.cells, error)
-                                          : core::triangulate3D (result.vertices, result.cells, error);
-    if (!ok)
-      return failure (result, error);
-    result.timings.delaunay_ms = millisecondsSince (stage);
-
-    report ("flow", 0.5);
-    stage = Clock::now ();
-    if (result.dimension == 2)
-      core::computeFlowRelation2D (prepared.planar, result.cells);
-    else
-      core::computeFlowRelation3D (result.vertices, result.cells);
-    const int facets = result.dimension + 1;
-    core::parallelFor (result.cells.size (), [&] (std::size_t k) {
-      FlowCell& cell = result.cells[k];
-      Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
-      for (int i = 0; i < facets; ++i)
-        sum += result.vertices[static_cast<std::size_t> (cell.vertices[i])];
-      cell.centroid = sum / facets;
-    });
-    result.timings.flow_ms = millisecondsSince (stage);
-
-    // The stable manifolds and the interior/exterior labelling read the same cells and write
-    // different fields of them (manifold and successor, inside): they run side by side.
-    report (params.separate_interior ? "manifolds and interior" : "manifolds", 0.6);
-    std::vector<std::string> manifold_warnings;
-    auto manifolds = [&] () {
-      const auto begin = Clock::now ();
-      const core::StableManifolds sm = core::computeStableManifolds (result.cells, result.dimension);
-      result.cycle_breaks = sm.cycle_breaks;
-      if (sm.cycle_breaks > 0)
-        manifold_warnings.push_back (std::to_string (sm.cycle_breaks) +
-                                     " cell(s) not ordered by the flow (degenerate input): resolved by height");
-      buildManifolds (sm, result);
-      result.timings.manifolds_ms = millisecondsSince (begin);
-    };
-    auto interior = [&] () {
-      if (!params.separate_interior)
-        return;
-      const auto begin = Clock::now ();
-      std::vector<Eigen::Vector3d> vertex_normals;
-      if (!params.normals.empty ())
-      {
-        vertex_normals.assign (result.vertices.size (), Eigen::Vector3d::Zero ());
-        for (std::size_t i = result.point_to_vertex.size (); i-- > 0;) // the first copy wins
-          if (result.point_to_vertex[i] >= 0)
-            vertex_normals[static_cast<std::size_t> (result.point_to_vertex[i])] = params.normals[i];
-      }
-      core::labelInterior (result, params, vertex_normals); // the only writer of result.warnings here
-      if (!result.interior.closed)
-        result.warnings.push_back ("the interior/exterior boundary is not closed");
-      else if (!result.interior.manifold)
-        result.warnings.push_back ("the interior/exterior boundary has " + std::to_string (result.interior.nonmanifold_edges) +
-                                   " non-manifold edge(s) and " + std::to_string (result.interior.nonmanifold_vertices) +
-                                   " non-manifold vertex(es)");
-      if (result.interior.inside_cells == 0)
-        result.warnings.push_back ("no cell was labelled inside: the sample may not enclose a volume (open scan, hole?)");
-      result.timings.interior_ms = millisecondsSince (begin);
-    };
-    const std::size_t earlier_warnings = result.warnings.size ();
-    core::runSideBySide (manifolds, interior);
-    result.warnings.insert (result.warnings.begin () + static_cast<std::ptrdiff_t> (earlier_warnings),
-                            manifold_warnings.begin (), manifold_warnings.end ());
-    result.feature_side = params.features;
-
-    report ("merge", 0.8);
-    stage = Clock::now ();
-    core::mergeManifolds (params, result);
-    result.timings.merge_ms = millisecondsSince (stage);
-
-    report ("labels", 0.9);
-    stage = Clock::now ();
-    core::labelPoints (result);
-    result.timings.labels_ms = millisecondsSince (stage);
-    result.timings.total_ms = millisecondsSince (start);
-    report ("done", 1.0);
+    if (const Status s = runStages (Run{points, normals, params, result, progress}); !s)
+      return failure (result, s.message);
   }
   catch (const std::bad_alloc&)
   {

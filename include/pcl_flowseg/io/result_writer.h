@@ -34,13 +34,12 @@ writePointCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZ>& 
 struct RunInfo
 {
   std::string input;   ///< input file name
-  double rho = 0.0;    ///< merge threshold used
   /** Features above this share of the reported features' volume are marked "significant". */
   double significance = kDefaultSignificance;
   double read_ms = 0.0;
 };
 
-/** \brief Writes a JSON summary: counts (points, cells, maxima, manifolds, segments), the
+/** \brief Writes a JSON summary: the parameters, counts (points, cells, maxima, manifolds, segments), the
   * segments (id, volume, centroid, point and cell counts, maximum height and location), the
   * adjacency (saddles), timings per stage in ms, warnings. Atomic. */
 Status

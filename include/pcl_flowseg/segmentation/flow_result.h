@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <pcl_flowseg/segmentation/flow_parameters.h>
+
 #include <Eigen/Core>
 
 #include <array>
@@ -101,14 +103,6 @@ struct StageTimings
   double total_ms = 0.0;
 };
 
-/** \brief Which features are reported (segment(), per-point labels). */
-enum class FeatureSide
-{
-  Interior = 0, ///< the shape's features (default)
-  Exterior = 1, ///< pockets and concavities outside the shape
-  Both = 2      ///< every segment
-};
-
 /** \brief What the interior/exterior separation found. */
 struct InteriorReport
 {
@@ -163,10 +157,11 @@ struct FlowResult
   /** Saddles between adjacent segments after merging (segment_a/b index \a segments). */
   std::vector<SaddleFacet> segment_adjacency;
 
+  /** The parameters the result was computed with (after remergeFlowSegmentation: its merge group). */
+  FlowParameters parameters;
+
   /** Interior/exterior separation summary (computed = false when it was switched off). */
   InteriorReport interior;
-  /** Which side's segments are reported as features. */
-  FeatureSide feature_side = FeatureSide::Interior;
   /** Segments reported as features, in order: indices into \a segments. Without interior/exterior
     * separation, every segment. */
   std::vector<int> features;

@@ -27,15 +27,12 @@ using Delaunay2 = CGAL::Delaunay_triangulation_2<Kernel, DataStructure>;
 using Point2 = Kernel::Point_2;
 } // namespace
 
-bool
-triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells, std::string& error)
+Status
+triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells)
 {
   cells.clear ();
   if (points.size () < 3)
-  {
-    error = "2D segmentation needs at least 3 distinct points, got " + std::to_string (points.size ());
-    return false;
-  }
+    return Status::error ("2D segmentation needs at least 3 distinct points, got " + std::to_string (points.size ()));
   std::vector<std::pair<Point2, int>> input;
   input.reserve (points.size ());
   for (std::size_t i = 0; i < points.size (); ++i)
@@ -44,10 +41,7 @@ triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>
   Delaunay2 dt;
   dt.insert (input.begin (), input.end ()); // spatially sorted insertion
   if (dt.dimension () < 2)
-  {
-    error = "all points are collinear: a 2D triangulation needs 3 points not on one line";
-    return false;
-  }
+    return Status::error ("all points are collinear: a 2D triangulation needs 3 points not on one line");
 
   int next = 0;
   for (auto f = dt.finite_faces_begin (); f != dt.finite_faces_end (); ++f)
@@ -64,7 +58,7 @@ triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>
     }
   }
   putInCanonicalOrder (cells, 2);
-  return true;
+  return Status::success ();
 }
 
 void

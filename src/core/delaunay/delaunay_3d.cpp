@@ -75,8 +75,8 @@ extractCells (Delaunay& dt, std::vector<FlowCell>& cells)
 }
 
 template <class Concurrency>
-bool
-triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells, std::string& error)
+Status
+triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells)
 {
   using Delaunay = typename Triangulation3<Concurrency>::Type;
   std::vector<std::pair<Point3, int>> input;
@@ -106,13 +106,11 @@ triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCel
       extractCells (dt, cells);
   }
   if (dimension < 3)
-  {
-    error = dimension == 2 ? "all points are coplanar: use 2D mode (dimension 2) for planar input"
-                           : "all points are collinear: a 3D triangulation needs 4 points not on one plane";
-    return false;
-  }
-  return true;
+    return Status::error (dimension == 2 ? "all points are coplanar: use 2D mode (dimension 2) for planar input"
+                                         : "all points are collinear: a 3D triangulation needs 4 points not on one plane");
+  return Status::success ();
 }
+
 /** True when CGAL's parallel insertion should run: two or more workers allowed, a few thousand
   * points at least, and a core to spare by the system's 1-minute load average. Its threads spin on
   * cell locks; when they must share cores with other busy processes they wait out each other's
@@ -136,22 +134,17 @@ parallelTriangulationPays (std::size_t points)
 }
 } // namespace
 
-bool
-triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells, std::string& error,
-               Insertion insertion)
+Status
+triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells, Insertion insertion)
 {
   cells.clear ();
   if (points.size () < 4)
-  {
-    error = "3D segmentation needs at least 4 distinct points, got " + std::to_string (points.size ());
-    return false;
-  }
+    return Status::error ("3D segmentation needs at least 4 distinct points, got " + std::to_string (points.size ()));
   const bool parallel = insertion == Insertion::Parallel ? workerThreads () > 1
                         : insertion == Insertion::Sequential ? false
                                                               : parallelTriangulationPays (points.size ());
-  const bool ok = parallel ? triangulateWith<CGAL::Parallel_tag> (points, cells, error)
-                           : triangulateWith<CGAL::Sequential_tag> (points, cells, error);
-  return ok;
+  return parallel ? triangulateWith<CGAL::Parallel_tag> (points, cells)
+                  : triangulateWith<CGAL::Sequential_tag> (points, cells);
 }
 
 void

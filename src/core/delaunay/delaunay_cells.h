@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_flowseg/common/status.h>
 #include <pcl_flowseg/segmentation/flow_result.h>
 
 #include <string>
@@ -13,25 +14,25 @@ namespace pcl_flowseg {
 namespace core {
 
 /** \brief Triangulates 2D points (CGAL, exact predicates) into \a cells: vertices and neighbors
-  * only, in canonical order (putInCanonicalOrder). Returns false with \a error when the points do
-  * not span the plane (fewer than 3 or all collinear). Points must be distinct. */
-bool
-triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells, std::string& error);
+  * only, in canonical order (putInCanonicalOrder). Fails when the points do not span the plane
+  * (fewer than 3 or all collinear). Points must be distinct. */
+Status
+triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells);
 
-/** \brief Triangulates 3D points into tetrahedra (vertices and neighbors, canonical order); in
-  * parallel (CGAL with TBB) when workerThreads() > 1, the input is large enough and the system's
-  * load leaves a core to spare. Returns false
-  * with \a error when the points do not span space (fewer than 4, collinear or coplanar). Points
-  * must be distinct. */
+/** \brief How triangulate3D inserts the points. */
 enum class Insertion
 {
-  Automatic,  ///< parallel when it pays (see above)
+  Automatic,  ///< in parallel when it pays (see triangulate3D)
   Sequential,
   Parallel    ///< whenever TBB may use two workers (tests)
 };
 
-bool
-triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells, std::string& error,
+/** \brief Triangulates 3D points into tetrahedra (vertices and neighbors, canonical order); in
+  * parallel (CGAL with TBB) when workerThreads() > 1, the input is large enough and the system's
+  * load leaves a core to spare. Fails when the points do not span space (fewer than 4, collinear
+  * or coplanar). Points must be distinct. */
+Status
+triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells,
                Insertion insertion = Insertion::Automatic);
 
 /** \brief The flow relation of triangles: flow_mask (exact test: a triangle flows across the edge

@@ -4,10 +4,9 @@
  */
 #include "core/geometry/cell_geometry.h"
 
-#include "core/merging/manifold_merging.h"
-
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cstdint>
 
 namespace pcl_flowseg {
@@ -121,6 +120,37 @@ facetTowards (const FlowCell& from, int to, int dimension)
     if (from.neighbors[i] == to)
       return i;
   return -1;
+}
+
+double
+facetSquaredRadius (const std::vector<Eigen::Vector3d>& vertices, const FlowCell& cell,
+                    int facet, int dimension, Eigen::Vector3d* centre)
+{
+  const int facets = dimension + 1;
+  const Eigen::Vector3d& a = vertices[static_cast<std::size_t> (cell.vertices[(facet + 1) % facets])];
+  const Eigen::Vector3d& b = vertices[static_cast<std::size_t> (cell.vertices[(facet + 2) % facets])];
+  if (dimension == 2)
+  {
+    if (centre)
+      *centre = 0.5 * (a + b);
+    return 0.25 * (b - a).squaredNorm ();
+  }
+  const Eigen::Vector3d& c = vertices[static_cast<std::size_t> (cell.vertices[(facet + 3) % facets])];
+  const Eigen::Vector3d u = b - a, v = c - a;
+  const Eigen::Vector3d w = u.cross (v);
+  const double w2 = w.squaredNorm ();
+  if (!(w2 > 0.0))
+  {
+    // Cannot happen for a facet of a valid triangulation; fall back to the longest edge.
+    const double e = std::max ({u.squaredNorm (), v.squaredNorm (), (c - b).squaredNorm ()});
+    if (centre)
+      *centre = (a + b + c) / 3.0;
+    return 0.25 * e;
+  }
+  const Eigen::Vector3d offset = (u.squaredNorm () * v.cross (w) + v.squaredNorm () * w.cross (u)) / (2.0 * w2);
+  if (centre)
+    *centre = a + offset;
+  return offset.squaredNorm ();
 }
 
 } // namespace core

@@ -15,6 +15,13 @@ namespace core {
 Eigen::Vector3d
 cellCircumcentre (const std::vector<Eigen::Vector3d>& vertices, const FlowCell& cell, int dimension);
 
+/** \brief Squared radius of the smallest circumsphere of facet \a facet of \a cell (the edge's
+  * half length squared in 2D), computed from the input-frame vertex coordinates; its centre
+  * goes to \a centre when given. */
+double
+facetSquaredRadius (const std::vector<Eigen::Vector3d>& vertices, const FlowCell& cell,
+                    int facet, int dimension, Eigen::Vector3d* centre = nullptr);
+
 /** \brief Unit normal of facet \a facet (opposite vertices[facet]) pointing away from the cell;
   * in 2D the normal of the edge within the cell's plane. */
 Eigen::Vector3d

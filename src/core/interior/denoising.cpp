@@ -104,16 +104,15 @@ smoothPoints (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& 
   return out;
 }
 
-bool
-triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, std::vector<FlowCell>& cells,
-                    std::string& error)
+Status
+triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, std::vector<FlowCell>& cells)
 {
   if (dimension == 3)
   {
-    if (!triangulate3D (points, cells, error))
-      return false;
-    computeFlowRelation3D (points, cells);
-    return true;
+    const Status s = triangulate3D (points, cells);
+    if (s)
+      computeFlowRelation3D (points, cells);
+    return s;
   }
   // Plane coordinates in an orthonormal basis of the points' plane.
   Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
@@ -129,10 +128,10 @@ triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, s
   planar.reserve (points.size ());
   for (const auto& p : points)
     planar.emplace_back ((p - mean).dot (u), (p - mean).dot (v));
-  if (!triangulate2D (planar, cells, error))
-    return false;
-  computeFlowRelation2D (planar, cells);
-  return true;
+  const Status s = triangulate2D (planar, cells);
+  if (s)
+    computeFlowRelation2D (planar, cells);
+  return s;
 }
 
 } // namespace core

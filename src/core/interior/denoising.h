@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_flowseg/common/status.h>
 #include <pcl_flowseg/segmentation/flow_result.h>
 
 #include <string>
@@ -49,10 +50,10 @@ medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhood
 std::vector<Eigen::Vector3d>
 smoothPoints (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension);
 
-/** \brief Triangulates points given in 3D (in 2D: points of one plane) into cells. */
-bool
-triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, std::vector<FlowCell>& cells,
-                    std::string& error);
+/** \brief Triangulates points given in 3D (in 2D: points of one plane) into cells with their flow
+  * relation. */
+Status
+triangulateWorking (const std::vector<Eigen::Vector3d>& points, int dimension, std::vector<FlowCell>& cells);
 
 } // namespace core
 } // namespace pcl_flowseg

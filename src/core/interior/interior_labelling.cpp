@@ -160,7 +160,7 @@ markRay (const std::vector<Eigen::Vector3d>& vertices, const std::vector<FlowCel
   * marked as free space. */
 std::size_t
 labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int d,
-            const FlowParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals)
+            const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals)
 {
   const int f = d + 1;
   const std::size_t n = cells.size ();
@@ -251,12 +251,12 @@ labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>&
     }
 
   // Sensor rays: everything between the sensor and a sample is free space.
-  if (params.use_viewpoint)
+  if (params.viewpoint)
   {
     const VertexIncidence inc = vertexIncidence (cells, vertices.size (), d);
     std::vector<std::uint8_t> free_space (n, 0);
     for (std::size_t v = 0; v < vertices.size (); ++v)
-      ray_cells += markRay (vertices, cells, d, inc, static_cast<int> (v), params.viewpoint, free_space);
+      ray_cells += markRay (vertices, cells, d, inc, static_cast<int> (v), *params.viewpoint, free_space);
     for (std::size_t c = 0; c < n; ++c)
       if (free_space[c])
         evidence (c, true, 1.0); // as strong as the strongest geometric evidence
@@ -284,7 +284,7 @@ labelCells (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>&
 } // namespace
 
 void
-labelInterior (FlowResult& r, const FlowParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals)
+labelInterior (FlowResult& r, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals)
 {
   const int d = r.dimension;
   r.interior = InteriorReport ();
@@ -322,10 +322,9 @@ labelInterior (FlowResult& r, const FlowParameters& params, const std::vector<Ei
       break;
   }
   std::vector<FlowCell> smooth_cells;
-  std::string error;
-  if (!triangulateWorking (points, d, smooth_cells, error))
+  if (const Status s = triangulateWorking (points, d, smooth_cells); !s)
   {
-    r.warnings.push_back ("denoising skipped: " + error);
+    r.warnings.push_back ("denoising skipped: " + s.message);
     r.interior.smoothing_passes = 0;
     if (params.denoising == Denoising::Always)
     {

@@ -4,7 +4,8 @@
  */
 #pragma once
 
-#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/segmentation/flow_parameters.h>
+#include <pcl_flowseg/segmentation/flow_result.h>
 
 #include <vector>
 
@@ -32,7 +33,7 @@ namespace core {
   * labelling that leaves more than kOffBoundaryShare of the samples off its boundary) are labelled
   * on a smoothed copy of the sample, whose labels are transferred by locating the cells' centroids. */
 void
-labelInterior (FlowResult& result, const FlowParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals);
+labelInterior (FlowResult& result, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals);
 
 /** \brief Recomputes FlowResult::interior's boundary figures (facet counts, closed, manifold)
   * from the cells' inside flags. */

@@ -1,8 +1,11 @@
 /*
- * pcl_flowseg - internal: statistics of cell sets, saddles between them, and rho-merging.
+ * pcl_flowseg - internal: rho-merging of stable manifolds into segments.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "core/merging/manifold_merging.h"
+
+#include "core/flow/cell_groups.h"
+#include "core/geometry/cell_geometry.h"
 
 #include <Eigen/Geometry>
 
@@ -16,102 +19,6 @@
 
 namespace pcl_flowseg {
 namespace core {
-
-double
-facetSquaredRadius (const std::vector<Eigen::Vector3d>& vertices, const FlowCell& cell,
-                    int facet, int dimension, Eigen::Vector3d* centre)
-{
-  const int facets = dimension + 1;
-  const Eigen::Vector3d& a = vertices[static_cast<std::size_t> (cell.vertices[(facet + 1) % facets])];
-  const Eigen::Vector3d& b = vertices[static_cast<std::size_t> (cell.vertices[(facet + 2) % facets])];
-  if (dimension == 2)
-  {
-    if (centre)
-      *centre = 0.5 * (a + b);
-    return 0.25 * (b - a).squaredNorm ();
-  }
-  const Eigen::Vector3d& c = vertices[static_cast<std::size_t> (cell.vertices[(facet + 3) % facets])];
-  const Eigen::Vector3d u = b - a, v = c - a;
-  const Eigen::Vector3d w = u.cross (v);
-  const double w2 = w.squaredNorm ();
-  if (!(w2 > 0.0))
-  {
-    // Cannot happen for a facet of a valid triangulation; fall back to the longest edge.
-    const double e = std::max ({u.squaredNorm (), v.squaredNorm (), (c - b).squaredNorm ()});
-    if (centre)
-      *centre = (a + b + c) / 3.0;
-    return 0.25 * e;
-  }
-  const Eigen::Vector3d offset = (u.squaredNorm () * v.cross (w) + v.squaredNorm () * w.cross (u)) / (2.0 * w2);
-  if (centre)
-    *centre = a + offset;
-  return offset.squaredNorm ();
-}
-
-std::vector<FlowSegment>
-summariseCells (const std::vector<FlowCell>& cells, const std::vector<int>& group_of_cell,
-                int group_count)
-{
-  std::vector<FlowSegment> groups (static_cast<std::size_t> (group_count));
-  std::vector<Eigen::Vector3d> weighted (groups.size (), Eigen::Vector3d::Zero ());
-  for (std::size_t c = 0; c < cells.size (); ++c)
-  {
-    const std::size_t g = static_cast<std::size_t> (group_of_cell[c]);
-    groups[g].volume += cells[c].volume;
-    groups[g].cell_count += 1;
-    weighted[g] += cells[c].volume * cells[c].centroid;
-  }
-  for (std::size_t g = 0; g < groups.size (); ++g)
-    groups[g].centroid = groups[g].volume > 0.0 ? Eigen::Vector3d (weighted[g] / groups[g].volume)
-                                                : Eigen::Vector3d::Zero ();
-  return groups;
-}
-
-std::vector<SaddleFacet>
-highestSharedFacets (const FlowResult& result, const std::vector<int>& group_of_cell)
-{
-  const int facets = result.dimension + 1;
-  std::unordered_map<std::uint64_t, SaddleFacet> best;
-  for (std::size_t c = 0; c < result.cells.size (); ++c)
-  {
-    const FlowCell& cell = result.cells[c];
-    for (int i = 0; i < facets; ++i)
-    {
-      const int nb = cell.neighbors[i];
-      if (nb == kInfiniteCell || static_cast<std::size_t> (nb) < c)
-        continue; // hull facet, or seen from the other side
-      int ga = group_of_cell[c], gb = group_of_cell[static_cast<std::size_t> (nb)];
-      if (ga == gb)
-        continue;
-      if (ga > gb)
-        std::swap (ga, gb);
-      Eigen::Vector3d centre;
-      const double r2 = facetSquaredRadius (result.vertices, cell, i, result.dimension, &centre);
-      const std::uint64_t key = (static_cast<std::uint64_t> (ga) << 32) | static_cast<std::uint32_t> (gb);
-      auto it = best.find (key);
-      if (it != best.end () && it->second.squared_radius >= r2)
-        continue;
-      SaddleFacet s;
-      s.segment_a = ga;
-      s.segment_b = gb;
-      s.cell = static_cast<int> (c);
-      s.facet = i;
-      for (int k = 0; k < facets - 1; ++k)
-        s.vertices[static_cast<std::size_t> (k)] = cell.vertices[(i + 1 + k) % facets];
-      s.squared_radius = r2;
-      s.location = centre;
-      best[key] = s;
-    }
-  }
-  std::vector<SaddleFacet> out;
-  out.reserve (best.size ());
-  for (auto& kv : best)
-    out.push_back (kv.second);
-  std::sort (out.begin (), out.end (), [] (const SaddleFacet& x, const SaddleFacet& y) {
-    return x.segment_a != y.segment_a ? x.segment_a < y.segment_a : x.segment_b < y.segment_b;
-  });
-  return out;
-}
 
 namespace {
 int
@@ -269,10 +176,11 @@ saddleSpacing (const SaddleFacet& saddle, const std::vector<double>& nearest, in
 }
 
 void
-mergeManifolds (const FlowParameters& params, FlowResult& result)
+mergeManifolds (const MergeParameters& params, FlowResult& result)
 {
   const double rho = params.rho, sampling_tolerance = params.sampling_tolerance, stump_ratio = params.stump_ratio;
   const double compact_rho = params.compact_rho, compact_size = params.compact_size;
+  const FeatureSide feature_side = result.parameters.features;
   const bool sided = result.interior.computed;
   const int m = static_cast<int> (result.manifolds.size ());
   // Side of a manifold: the side of its maximum (the maximum at infinity is outside).
@@ -486,9 +394,9 @@ mergeManifolds (const FlowParameters& params, FlowResult& result)
   for (int k = 0; k < static_cast<int> (result.segments.size ()); ++k)
   {
     const FlowSegment& seg = result.segments[static_cast<std::size_t> (k)];
-    const bool wanted = !sided || result.feature_side == FeatureSide::Both ||
-                        (result.feature_side == FeatureSide::Interior && seg.interior == 1) ||
-                        (result.feature_side == FeatureSide::Exterior && seg.interior == 0);
+    const bool wanted = !sided || feature_side == FeatureSide::Both ||
+                        (feature_side == FeatureSide::Interior && seg.interior == 1) ||
+                        (feature_side == FeatureSide::Exterior && seg.interior == 0);
     if (wanted)
       result.features.push_back (k);
   }

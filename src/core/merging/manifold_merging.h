@@ -1,34 +1,15 @@
 /*
- * pcl_flowseg - internal: statistics of cell sets, saddles between them, and rho-merging.
+ * pcl_flowseg - internal: rho-merging of stable manifolds into segments.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #pragma once
 
-#include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/segmentation/flow_result.h>
 
 #include <vector>
 
 namespace pcl_flowseg {
 namespace core {
-
-/** \brief Squared radius of the smallest circumsphere of facet \a facet of \a cell (the edge's
-  * half length squared in 2D), computed from the input-frame vertex coordinates; its centre
-  * goes to \a centre when given. */
-double
-facetSquaredRadius (const std::vector<Eigen::Vector3d>& vertices, const FlowCell& cell,
-                    int facet, int dimension, Eigen::Vector3d* centre = nullptr);
-
-/** \brief Volume, centroid and cell count of each group of cells (\a group_of_cell[c] in
-  * 0..group_count-1). Maxima and flags are left to the caller. */
-std::vector<FlowSegment>
-summariseCells (const std::vector<FlowCell>& cells, const std::vector<int>& group_of_cell,
-                int group_count);
-
-/** \brief For every pair of groups that share a facet, the shared facet of largest
-  * circumradius. Sorted by (segment_a, segment_b). */
-std::vector<SaddleFacet>
-highestSharedFacets (const FlowResult& result, const std::vector<int>& group_of_cell);
 
 /** \brief Distance from each vertex of \a result to its nearest other vertex (the shortest
   * Delaunay edge at it: a sample's nearest neighbour is always a Delaunay neighbour); +inf for a
@@ -84,7 +65,7 @@ saddleSpacing (const SaddleFacet& saddle, const std::vector<double>& nearest, in
   * never move; groups without a maximum of their own and the one at infinity take no part. The
   * number of segments does not change. */
 void
-mergeManifolds (const FlowParameters& params, FlowResult& result);
+mergeManifolds (const MergeParameters& params, FlowResult& result);
 
 } // namespace core
 } // namespace pcl_flowseg

@@ -85,9 +85,9 @@ putInSpatialOrder (PreparedPoints& out)
 
 } // namespace
 
-bool
-preparePoints (const std::vector<Eigen::Vector3d>& points, const FlowParameters& params,
-               PreparedPoints& out, std::vector<std::string>& warnings, std::string& error)
+Status
+preparePoints (const std::vector<Eigen::Vector3d>& points, const PreparationParameters& params,
+               PreparedPoints& out, std::vector<std::string>& warnings)
 {
   out = PreparedPoints ();
   out.point_to_vertex.assign (points.size (), -1);
@@ -104,10 +104,7 @@ preparePoints (const std::vector<Eigen::Vector3d>& points, const FlowParameters&
   if (out.non_finite > 0)
     warnings.push_back (std::to_string (out.non_finite) + " point(s) with NaN/Inf coordinates skipped (label kNoSegment)");
   if (finite.empty ())
-  {
-    error = points.empty () ? "the input cloud is empty" : "the input cloud has no finite point";
-    return false;
-  }
+    return Status::error (points.empty () ? "the input cloud is empty" : "the input cloud has no finite point");
 
   // Duplicates: sort by coordinates, every copy maps to the first copy in input order.
   std::vector<int> sorted = finite;
@@ -205,7 +202,7 @@ preparePoints (const std::vector<Eigen::Vector3d>& points, const FlowParameters&
         out.vertices[k] = mean + out.planar[k].x () * axis_u + out.planar[k].y () * axis_v;
     }
   }
-  return true;
+  return Status::success ();
 }
 
 } // namespace core

@@ -4,7 +4,10 @@
  */
 #pragma once
 
-#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/common/status.h>
+#include <pcl_flowseg/segmentation/flow_parameters.h>
+
+#include <Eigen/Core>
 
 #include <string>
 #include <vector>
@@ -26,12 +29,12 @@ struct PreparedPoints
   double thickness = 0.0;                  ///< spread normal to the best-fit plane
 };
 
-/** \brief Filters, deduplicates and chooses the dimension. Returns false with \a error when no
-  * finite point is left. 2D coordinates drop a constant axis exactly when there is one,
-  * otherwise they are the best-fit plane's orthonormal basis coordinates. */
-bool
-preparePoints (const std::vector<Eigen::Vector3d>& points, const FlowParameters& params,
-               PreparedPoints& out, std::vector<std::string>& warnings, std::string& error);
+/** \brief Filters, deduplicates and chooses the dimension; fails when no finite point is left.
+  * 2D coordinates drop a constant axis exactly when there is one, otherwise they are the best-fit
+  * plane's orthonormal basis coordinates. */
+Status
+preparePoints (const std::vector<Eigen::Vector3d>& points, const PreparationParameters& params,
+               PreparedPoints& out, std::vector<std::string>& warnings);
 
 } // namespace core
 } // namespace pcl_flowseg

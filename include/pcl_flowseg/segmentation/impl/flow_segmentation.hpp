@@ -18,9 +18,7 @@ FlowSegmentation<PointT>::segment (std::vector<PointIndices>& segments)
   result_ = pcl_flowseg::FlowResult ();
   used_indices_.clear ();
   last_error_.clear ();
-  if (!dimension_ok_)
-    last_error_ = "dimension must be 0 (automatic), 2 or 3";
-  else if (!input_)
+  if (!input_)
     last_error_ = "no input cloud given (setInputCloud)";
   else if (!initCompute ())
     last_error_ = "invalid input cloud or indices";
@@ -30,11 +28,9 @@ FlowSegmentation<PointT>::segment (std::vector<PointIndices>& segments)
     return false;
   }
 
-  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3d> points, normals;
   points.reserve (indices_->size ());
   used_indices_.reserve (indices_->size ());
-  pcl_flowseg::FlowParameters params = params_;
-  params.normals.clear ();
   for (const auto idx : *indices_)
   {
     const PointT& p = (*input_)[idx];
@@ -42,13 +38,11 @@ FlowSegmentation<PointT>::segment (std::vector<PointIndices>& segments)
     used_indices_.push_back (idx);
   }
   if (use_normals_)
-    copyNormals (params.normals);
+    copyNormals (normals);
+  pcl_flowseg::FlowParameters params = params_;
   if (use_sensor_origin_)
-  {
-    params.use_viewpoint = true;
-    params.viewpoint = input_->sensor_origin_.template head<3> ().template cast<double> ();
-  }
-  const pcl_flowseg::Status status = pcl_flowseg::runFlowSegmentation (points, params, result_, progress_);
+    params.interior.viewpoint = input_->sensor_origin_.template head<3> ().template cast<double> ();
+  const pcl_flowseg::Status status = pcl_flowseg::runFlowSegmentation (points, normals, params, result_, progress_);
   deinitCompute ();
   if (!status.ok)
   {
@@ -63,15 +57,9 @@ FlowSegmentation<PointT>::segment (std::vector<PointIndices>& segments)
 }
 
 template <typename PointT> bool
-FlowSegmentation<PointT>::remerge (double rho, std::vector<PointIndices>& segments)
+FlowSegmentation<PointT>::remerge (const pcl_flowseg::MergeParameters& merge, std::vector<PointIndices>& segments)
 {
   segments.clear ();
-  pcl_flowseg::FlowParameters merge; // the merge parameters only (not the normals)
-  merge.rho = rho;
-  merge.sampling_tolerance = params_.sampling_tolerance;
-  merge.stump_ratio = params_.stump_ratio;
-  merge.compact_rho = params_.compact_rho;
-  merge.compact_size = params_.compact_size;
   const pcl_flowseg::Status status = pcl_flowseg::remergeFlowSegmentation (merge, result_);
   if (!status.ok)
   {
@@ -80,9 +68,17 @@ FlowSegmentation<PointT>::remerge (double rho, std::vector<PointIndices>& segmen
     return false;
   }
   last_error_.clear ();
-  params_.rho = rho;
+  params_.merge = merge;
   extractIndices (segments);
   return true;
+}
+
+template <typename PointT> bool
+FlowSegmentation<PointT>::remerge (double rho, std::vector<PointIndices>& segments)
+{
+  pcl_flowseg::MergeParameters merge = params_.merge;
+  merge.rho = rho;
+  return remerge (merge, segments);
 }
 
 template <typename PointT> void

@@ -1,0 +1,125 @@
+/*
+ * pcl_flowseg - the parameters of a flow segmentation, in groups, each default given once here.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/common/status.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <optional>
+
+namespace pcl_flowseg {
+
+/** \brief How the dimension of the flow is chosen. */
+enum class DimensionMode
+{
+  Automatic = 0, ///< 2D when all points lie on one plane, 3D otherwise
+  Planar = 2,    ///< 2D: points are projected onto their best-fit plane
+  Spatial = 3    ///< 3D: fails on coplanar input
+};
+
+/** \brief Whether the interior/exterior separation works on a smoothed copy of a noisy sample. */
+enum class Denoising
+{
+  Automatic = 0, ///< when the sample shows noise (see docs/parameters.md)
+  Off = 1,       ///< never: the sample as it is
+  Always = 2     ///< always (at least one smoothing pass)
+};
+
+/** \brief Which segments are reported as features. */
+enum class FeatureSide
+{
+  Interior = 0, ///< the shape's features
+  Exterior = 1, ///< pockets and concavities outside the shape
+  Both = 2      ///< every segment
+};
+
+/** \brief From input points to the triangulated vertices. */
+struct PreparationParameters
+{
+  /** 2D or 3D flow. */
+  DimensionMode dimension = DimensionMode::Automatic;
+  /** Automatic mode chooses 2D when the spread of the points normal to their best-fit plane is at
+    * most this share of the bounding-box diagonal (dimensionless, >= 0). */
+  double planar_tolerance = 1e-9;
+};
+
+/** \brief How stable manifolds merge into segments. All values are dimensionless; with
+  * sampling_tolerance, stump_ratio and compact_size 0 the result is the paper's segmentation. */
+struct MergeParameters
+{
+  /** The paper's threshold (finite, > 0): two stable manifolds sharing a facet t merge when the
+    * circumradii of both their maxima are below rho R(t) + sampling_tolerance s(t). Below 1
+    * nothing merges. */
+  double rho = 1.05;
+  /** Additive slack of the rule, in local sample spacings s(t) (finite, >= 0): heights measured
+    * on a sample carry an error of about the spacing. Ignored when rho < 1. */
+  double sampling_tolerance = 0.5;
+  /** Thin parts take back their stumps from parts more than this many times thicker
+    * (circumradius ratio; 0 = off, else >= 1). */
+  double stump_ratio = 2.0;
+  /** Threshold of the compact pass (finite, > 0; acts only above rho): segments whose saddle
+    * passes the rule at this threshold merge when the smaller is compact (see compact_size). */
+  double compact_rho = 1.2;
+  /** Largest compact segment, in balls (2D: discs) of its saddle's radius (finite, >= 0; 0 = no
+    * compact pass). */
+  double compact_size = 2.5;
+
+  /** \brief The paper's rule alone at \a rho: no sampling tolerance, compact pass or stumps. */
+  static MergeParameters
+  paperRule (double rho)
+  {
+    MergeParameters m;
+    m.rho = rho;
+    m.sampling_tolerance = m.stump_ratio = m.compact_size = 0.0;
+    return m;
+  }
+};
+
+/** \brief The separation of the shape's interior from its exterior (surface reconstruction). */
+struct InteriorParameters
+{
+  /** Separate interior and exterior; off gives the paper's raw segmentation of the whole convex
+    * hull, every segment reported. */
+  bool separate = true;
+  /** Smoothing of noisy samples before the separation (the flow always uses the sample as is). */
+  Denoising denoising = Denoising::Automatic;
+  /** Sensor position of a single-view scan, input frame: the cells the rays from it to the
+    * points cross are free space, hence outside. None by default. */
+  std::optional<Eigen::Vector3d> viewpoint;
+};
+
+/** \brief Where and how much the run may compute. The result does not depend on it. */
+struct ExecutionParameters
+{
+  /** Worker threads for the triangulation and the per-cell stages: 0 = all hardware threads,
+    * 1 = sequential. */
+  unsigned threads = 0;
+  /** Memory the run may use, in bytes; 0 = what the system reports available. Inputs whose
+    * estimated need exceeds it are refused before any work. */
+  std::size_t memory_limit = 0;
+};
+
+/** \brief Everything that decides a flow segmentation. FlowResult::parameters records it. */
+struct FlowParameters
+{
+  PreparationParameters preparation;
+  MergeParameters merge;
+  InteriorParameters interior;
+  /** Which segments are reported as features (FlowResult::features, per-point labels). */
+  FeatureSide features = FeatureSide::Interior;
+  ExecutionParameters execution;
+};
+
+/** \brief Why \a merge cannot be used (a message naming the parameter), or success. */
+Status
+checkMergeParameters (const MergeParameters& merge);
+
+/** \brief Why \a params cannot be used, or success: every group checked, enumerations included. */
+Status
+checkParameters (const FlowParameters& params);
+
+} // namespace pcl_flowseg

@@ -1,0 +1,56 @@
+/*
+ * pcl_flowseg - checking the parameters of a flow segmentation.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/segmentation/flow_parameters.h>
+
+#include <cmath>
+#include <string>
+
+namespace pcl_flowseg {
+
+namespace {
+std::string
+got (double value)
+{
+  return ", got " + std::to_string (value);
+}
+} // namespace
+
+Status
+checkMergeParameters (const MergeParameters& m)
+{
+  if (!std::isfinite (m.rho) || m.rho <= 0.0)
+    return Status::error ("rho must be a finite number > 0" + got (m.rho));
+  if (!std::isfinite (m.sampling_tolerance) || m.sampling_tolerance < 0.0)
+    return Status::error ("the sampling tolerance must be a finite number >= 0" + got (m.sampling_tolerance));
+  if (!std::isfinite (m.stump_ratio) || (m.stump_ratio != 0.0 && m.stump_ratio < 1.0))
+    return Status::error ("the stump ratio must be 0 (off) or a finite number >= 1" + got (m.stump_ratio));
+  if (!std::isfinite (m.compact_rho) || m.compact_rho <= 0.0)
+    return Status::error ("the compact rho must be a finite number > 0" + got (m.compact_rho));
+  if (!std::isfinite (m.compact_size) || m.compact_size < 0.0)
+    return Status::error ("the compact size must be a finite number >= 0" + got (m.compact_size));
+  return Status::success ();
+}
+
+Status
+checkParameters (const FlowParameters& p)
+{
+  const DimensionMode d = p.preparation.dimension;
+  if (d != DimensionMode::Automatic && d != DimensionMode::Planar && d != DimensionMode::Spatial)
+    return Status::error ("dimension must be 0 (automatic), 2 or 3, got " + std::to_string (static_cast<int> (d)));
+  if (!std::isfinite (p.preparation.planar_tolerance) || p.preparation.planar_tolerance < 0.0)
+    return Status::error ("planar tolerance must be a finite number >= 0" + got (p.preparation.planar_tolerance));
+  if (const Status merge = checkMergeParameters (p.merge); !merge)
+    return merge;
+  const Denoising n = p.interior.denoising;
+  if (n != Denoising::Automatic && n != Denoising::Off && n != Denoising::Always)
+    return Status::error ("denoising must be automatic, off or always");
+  if (p.interior.viewpoint && !p.interior.viewpoint->allFinite ())
+    return Status::error ("the viewpoint has non-finite coordinates");
+  if (p.features != FeatureSide::Interior && p.features != FeatureSide::Exterior && p.features != FeatureSide::Both)
+    return Status::error ("features must be interior, exterior or both");
+  return Status::success ();
+}
+
+} // namespace pcl_flowseg
