@@ -6,6 +6,7 @@
 
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/shape_signature.h>
 #include <pcl_flowseg/signature/signature_database.h>
 
 #include <atomic>

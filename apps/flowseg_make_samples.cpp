@@ -2,7 +2,7 @@
  * flowseg_make_samples: writes the procedural sample shapes (known parts) as PCD files.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/io/point_cloud_writer.h>
 #include <pcl_flowseg/evaluation/shape_generator.h>
 
 #include <cerrno>

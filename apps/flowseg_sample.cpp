@@ -5,7 +5,7 @@
 #include "app_common.h"
 
 #include <pcl_flowseg/io/mesh_io.h>
-#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/io/point_cloud_writer.h>
 #include <pcl_flowseg/io/silhouette.h>
 
 #include <cmath>

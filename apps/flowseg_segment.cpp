@@ -7,7 +7,10 @@
 
 #include <pcl_flowseg/segmentation/flow_segmentation.h>
 #include <pcl_flowseg/io/point_io.h>
-#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/io/point_cloud_writer.h>
+#include <pcl_flowseg/io/segmentation_json.h>
+#include <pcl_flowseg/io/segmentation_ply.h>
+#include <pcl_flowseg/io/segmentation_svg.h>
 
 #include <pcl/console/print.h>
 
@@ -314,16 +317,11 @@ main (int argc, char** argv)
   if (!quiet)
   {
     const auto& t = result.timings;
-    std::size_t interior = 0, unlabelled = 0, significant = 0;
-    double reported = 0;
-    for (int k : result.features)
-      reported += result.segments[static_cast<std::size_t> (k)].volume;
-    for (int k : result.features)
-      significant += result.segments[static_cast<std::size_t> (k)].volume > significance * reported;
+    std::size_t interior = 0;
+    const std::size_t unlabelled = result.unlabelledPoints ();
+    const std::size_t significant = pcl_flowseg::significantSegments (result, result.features, significance).size ();
     for (const auto& s : result.segments)
       interior += s.interior == 1;
-    for (std::size_t i = 0; i < result.point_labels.size (); ++i)
-      unlabelled += result.point_labels[i] == pcl_flowseg::kNoSegment && result.point_to_vertex[i] >= 0;
     std::fprintf (stderr,
                   "%dD: %zu points (%zu non-finite, %zu duplicates), %zu cells, %zu maxima, "
                   "%zu segments after merging with rho=%g (%zu interior), %zu features reported (%zu significant), %zu points unlabelled\n",

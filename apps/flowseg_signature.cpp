@@ -4,6 +4,7 @@
  */
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/shape_signature.h>
 #include <pcl_flowseg/signature/signature.h>
 
 #include <cmath>

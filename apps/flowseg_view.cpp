@@ -6,8 +6,10 @@
  */
 #include "app_common.h"
 
+#include <pcl_flowseg/common/feature_significance.h>
+#include <pcl_flowseg/common/interior_boundary.h>
 #include <pcl_flowseg/segmentation/flow_segmentation.h>
-#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/io/segment_colours.h>
 #include <pcl_flowseg/io/shape_input.h>
 
 #include <pcl/PolygonMesh.h>
@@ -38,7 +40,7 @@ Options:
   -r, --rho R            merge threshold (default )" << pcl_flowseg::MergeParameters ().rho << R"()
       --paper-rule       the paper's merging rule alone (no tolerance, compact pass or stumps)
   -f, --features SIDE    interior | exterior | both (default interior)
-      --significance F   centroid spheres for features above this volume share (default 0.02)
+      --significance F   centroid spheres for features above this volume share (default )" << pcl_flowseg::kDefaultSignificance << R"()
       --surface          draw the reconstructed surface as a wireframe
       --mesh-points N    points sampled on a mesh (default 20000)
       --point-size P     rendered point size in pixels (default 3)
@@ -63,7 +65,7 @@ int
 main (int argc, char** argv)
 {
   std::string input, screenshot;
-  double rho = pcl_flowseg::MergeParameters ().rho, significance = 0.02, point_size = 3;
+  double rho = pcl_flowseg::MergeParameters ().rho, significance = pcl_flowseg::kDefaultSignificance, point_size = 3;
   bool paper_rule = false;
   pcl_flowseg::FeatureSide side = pcl_flowseg::FeatureSide::Interior;
   bool surface = false, has_view = false;
@@ -185,10 +187,13 @@ main (int argc, char** argv)
   }
   const double diag = (hi - lo).norm ();
   std::size_t spheres = 0;
+  std::vector<char> significant (r.segments.size (), 0);
+  for (int k : pcl_flowseg::significantSegments (r, r.features, significance))
+    significant[static_cast<std::size_t> (k)] = 1;
   for (std::size_t f = 0; f < r.features.size (); ++f)
   {
     const auto& s = r.segments[static_cast<std::size_t> (r.features[f])];
-    if (!(total > 0) || s.volume <= significance * total)
+    if (!significant[static_cast<std::size_t> (r.features[f])])
       continue;
     const auto c = pcl_flowseg::segmentColour (static_cast<std::uint32_t> (f));
     const double radius = 0.02 * diag + 0.08 * diag * std::cbrt (s.volume / total);

@@ -11,7 +11,9 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <pcl_flowseg/evaluation/shape_generator.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/shape_signature.h>
 #include <pcl_flowseg/signature/signature.h>
 #include <pcl_flowseg/signature/signature_database.h>
 #include <pcl_flowseg/signature/signature_matcher.h>

@@ -6,7 +6,10 @@
 
 #include <pcl_flowseg/segmentation/flow_segmentation.h>
 #include <pcl_flowseg/io/point_io.h>
-#include <pcl_flowseg/io/result_writer.h>
+#include <pcl_flowseg/io/point_cloud_writer.h>
+#include <pcl_flowseg/io/segmentation_json.h>
+#include <pcl_flowseg/io/segmentation_ply.h>
+#include <pcl_flowseg/io/segmentation_svg.h>
 #include <pcl_flowseg/io/mesh_io.h>
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/io/silhouette.h>

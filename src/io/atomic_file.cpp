@@ -1,5 +1,5 @@
 /*
- * pcl_flowseg - internal: files that appear whole or not at all.
+ * pcl_flowseg - files that appear whole or not at all.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <pcl_flowseg/io/atomic_file.h>
@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <unistd.h>
 
 namespace pcl_flowseg {
@@ -36,6 +37,19 @@ writeFileAtomically (const std::string& path, const std::function<Status (const 
     return Status::error ("cannot write " + path + ": " + why);
   }
   return Status::success ();
+}
+
+Status
+writeTextFileAtomically (const std::string& path, const std::function<void (std::ostream& out)>& write)
+{
+  return writeFileAtomically (path, [&] (const std::string& tmp) {
+    std::ofstream out (tmp, std::ios::binary);
+    if (!out)
+      return Status::error ("cannot create file");
+    write (out);
+    out.flush ();
+    return out.good () ? Status::success () : Status::error ("write failed (disk full?)");
+  });
 }
 
 } // namespace pcl_flowseg

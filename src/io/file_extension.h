@@ -1,5 +1,5 @@
 /*
- * pcl_flowseg - internal: helpers for file names.
+ * pcl_flowseg - internal: the extension of a file name.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #pragma once
@@ -9,6 +9,7 @@
 #include <string>
 
 namespace pcl_flowseg {
+namespace detail {
 
 /** \brief Extension of \a path in lower case, without the dot ("" when there is none). */
 inline std::string
@@ -23,4 +24,5 @@ lowerExtension (const std::string& path)
   return ext;
 }
 
+} // namespace detail
 } // namespace pcl_flowseg

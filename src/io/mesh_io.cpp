@@ -137,7 +137,7 @@ loadPly (const std::string& path, TriangleMesh& mesh)
   if (pcl::io::loadPLYFile (path, poly) < 0)
     return Status::error (path + ": not a readable PLY file");
   pcl::PointCloud<pcl::PointXYZ> cloud;
-  const Status read = pointsFromBlob (poly.cloud, path, cloud, nullptr);
+  const Status read = detail::readPointFields (poly.cloud, path, cloud, nullptr);
   if (!read)
     return read;
   for (const auto& p : cloud)
@@ -182,7 +182,7 @@ Status
 loadTriangleMesh (const std::string& path, TriangleMesh& mesh)
 {
   mesh = TriangleMesh ();
-  const std::string ext = lowerExtension (path);
+  const std::string ext = detail::lowerExtension (path);
   if (ext != "off" && ext != "obj" && ext != "ply")
     return Status::error (path + ": unknown mesh type '." + ext + "' (expected .off, .obj or .ply)");
   std::ifstream in (path);

@@ -9,9 +9,10 @@
 #include <cstring>
 
 namespace pcl_flowseg {
+namespace detail {
 
 Status
-pointsFromBlob (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud,
+readPointFields (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud,
                 std::vector<Eigen::Vector3d>* normals)
 {
   // Coordinates are read field by field in whatever numeric type the file uses (PLY files often
@@ -63,4 +64,5 @@ pointsFromBlob (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::P
   return Status::success ();
 }
 
+} // namespace detail
 } // namespace pcl_flowseg

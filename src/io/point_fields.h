@@ -16,13 +16,15 @@
 #include <vector>
 
 namespace pcl_flowseg {
+namespace detail {
 
 /** \brief Appends the points of \a blob to \a cloud, reading x, y (required) and z in whatever
   * numeric type the file used, and the normals (normal_x/y/z or nx/ny/nz) when \a normals is
   * given and the fields exist. Checks that the data is as long as the header says and that every
   * field lies inside the point record (PCL's own conversion does neither). */
 Status
-pointsFromBlob (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud,
+readPointFields (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud,
                 std::vector<Eigen::Vector3d>* normals);
 
+} // namespace detail
 } // namespace pcl_flowseg

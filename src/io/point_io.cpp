@@ -273,7 +273,7 @@ loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& 
   const int rc = pcd ? pcl::io::loadPCDFile (path, blob, origin, orientation) : pcl::io::loadPLYFile (path, blob);
   if (rc < 0)
     return Status::error (path + ": not a readable " + std::string (pcd ? "PCD" : "PLY") + " file");
-  const Status read = pointsFromBlob (blob, path, cloud, &normals);
+  const Status read = detail::readPointFields (blob, path, cloud, &normals);
   if (!read)
     return read;
   cloud.sensor_origin_ = origin;
@@ -286,7 +286,7 @@ loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& 
 bool
 isSupportedPointFile (const std::string& path)
 {
-  const std::string ext = lowerExtension (path);
+  const std::string ext = detail::lowerExtension (path);
   return ext == "pcd" || ext == "ply" || ext == "xyz" || ext == "txt" || ext == "csv" || ext == "off" || ext == "obj";
 }
 
@@ -302,7 +302,7 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, 
 {
   cloud.clear ();
   normals.clear ();
-  const std::string ext = lowerExtension (path);
+  const std::string ext = detail::lowerExtension (path);
   if (!isSupportedPointFile (path))
     return Status::error (path + ": unknown file type '." + ext +
                           "' (expected .pcd, .ply, .xyz, .txt, .csv, .off or .obj)");

@@ -28,7 +28,7 @@ Status
 loadShapeSample (const std::string& path, const ShapeInputOptions& options, std::vector<Eigen::Vector3d>& points)
 {
   points.clear ();
-  const std::string ext = lowerExtension (path);
+  const std::string ext = detail::lowerExtension (path);
   if (isSilhouetteFile (path))
   {
     GreyImage image;

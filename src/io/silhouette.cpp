@@ -239,7 +239,7 @@ loadPgm (const std::string& path, GreyImage& image)
 bool
 isSilhouetteFile (const std::string& path)
 {
-  const std::string ext = lowerExtension (path);
+  const std::string ext = detail::lowerExtension (path);
   return ext == "png" || ext == "bmp" || ext == "pgm";
 }
 
@@ -247,7 +247,7 @@ Status
 loadGreyImage (const std::string& path, GreyImage& image)
 {
   image = GreyImage ();
-  const std::string ext = lowerExtension (path);
+  const std::string ext = detail::lowerExtension (path);
   Status s = ext == "png" ? loadPng (path, image) : ext == "bmp" ? loadBmp (path, image) : ext == "pgm" ? loadPgm (path, image)
                                                                    : Status::error (path + ": not a .png, .bmp or .pgm image");
   if (!s.ok)

@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <pcl_flowseg/segmentation/flow_result.h>
+#include <pcl_flowseg/common/flow_result.h>
 #include <pcl_flowseg/io/mesh_io.h>
 #include <pcl_flowseg/common/status.h>
 

@@ -7,6 +7,7 @@
 #include <pcl_flowseg/common/status.h>
 
 #include <functional>
+#include <ostream>
 #include <string>
 
 namespace pcl_flowseg {
@@ -16,5 +17,10 @@ namespace pcl_flowseg {
   * failed write therefore never leaves a partial \a path. */
 Status
 writeFileAtomically (const std::string& path, const std::function<Status (const std::string& tmp)>& write);
+
+/** \brief writeFileAtomically for text: \a write puts the content on a stream; the file appears
+  * only when the stream reports no error (a full disk, say) after the last byte. */
+Status
+writeTextFileAtomically (const std::string& path, const std::function<void (std::ostream& out)>& write);
 
 } // namespace pcl_flowseg

@@ -5,8 +5,8 @@
 #pragma once
 
 #include <pcl_flowseg/common/status.h>
-#include <pcl_flowseg/segmentation/flow_parameters.h>
-#include <pcl_flowseg/segmentation/flow_result.h>
+#include <pcl_flowseg/common/flow_parameters.h>
+#include <pcl_flowseg/common/flow_result.h>
 
 #include <Eigen/Core>
 

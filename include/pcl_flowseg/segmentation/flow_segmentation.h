@@ -4,9 +4,9 @@
  */
 #pragma once
 
-#include <pcl_flowseg/segmentation/flow_parameters.h>
+#include <pcl_flowseg/common/flow_parameters.h>
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
-#include <pcl_flowseg/segmentation/flow_result.h>
+#include <pcl_flowseg/common/flow_result.h>
 
 #include <pcl/PointIndices.h>
 #include <pcl/pcl_base.h>

@@ -4,9 +4,8 @@
  */
 #pragma once
 
-#include <pcl_flowseg/segmentation/flow_pipeline.h>
-#include <pcl_flowseg/segmentation/flow_result.h>
-#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/common/feature_significance.h>
+#include <pcl_flowseg/common/flow_result.h>
 #include <pcl_flowseg/common/status.h>
 
 #include <Eigen/Core>
@@ -15,10 +14,6 @@
 #include <vector>
 
 namespace pcl_flowseg {
-
-/** \brief Default significance: a feature counts when its volume exceeds this fraction of the
-  * total interior volume. */
-constexpr double kDefaultSignificance = 0.02;
 
 /** \brief One significant feature: its representative point and weight. */
 struct WeightedPoint
@@ -46,11 +41,5 @@ struct Signature
   * separation was not computed or found no interior. */
 Status
 signatureFromSegmentation (const FlowResult& result, double significance, Signature& signature);
-
-/** \brief The signature of a shape file (anything loadShapeSample reads): sample, segment with
-  * \a params, keep the features above \a significance. The message names the file on failure. */
-Status
-signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
-                      double significance, Signature& signature);
 
 } // namespace pcl_flowseg

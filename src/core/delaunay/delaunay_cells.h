@@ -5,7 +5,7 @@
 #pragma once
 
 #include <pcl_flowseg/common/status.h>
-#include <pcl_flowseg/segmentation/flow_result.h>
+#include <pcl_flowseg/common/flow_result.h>
 
 #include <string>
 #include <vector>

@@ -6,7 +6,7 @@
 
 #include "core/flow/stable_manifolds.h"
 
-#include <pcl_flowseg/segmentation/flow_result.h>
+#include <pcl_flowseg/common/flow_result.h>
 
 namespace pcl_flowseg {
 namespace core {

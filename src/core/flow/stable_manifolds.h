@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <pcl_flowseg/segmentation/flow_result.h>
+#include <pcl_flowseg/common/flow_result.h>
 
 #include <cstddef>
 #include <vector>

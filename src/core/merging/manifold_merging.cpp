@@ -4,6 +4,8 @@
  */
 #include "core/merging/manifold_merging.h"
 
+#include <pcl_flowseg/common/feature_significance.h>
+
 #include "core/flow/cell_groups.h"
 #include "core/geometry/cell_geometry.h"
 
@@ -180,7 +182,6 @@ mergeManifolds (const MergeParameters& params, FlowResult& result)
 {
   const double rho = params.rho, sampling_tolerance = params.sampling_tolerance, stump_ratio = params.stump_ratio;
   const double compact_rho = params.compact_rho, compact_size = params.compact_size;
-  const FeatureSide feature_side = result.parameters.features;
   const bool sided = result.interior.computed;
   const int m = static_cast<int> (result.manifolds.size ());
   // Side of a manifold: the side of its maximum (the maximum at infinity is outside).
@@ -390,16 +391,7 @@ mergeManifolds (const MergeParameters& params, FlowResult& result)
   }
   result.segment_adjacency = highestSharedFacets (result, segment_of_cell);
 
-  result.features.clear ();
-  for (int k = 0; k < static_cast<int> (result.segments.size ()); ++k)
-  {
-    const FlowSegment& seg = result.segments[static_cast<std::size_t> (k)];
-    const bool wanted = !sided || feature_side == FeatureSide::Both ||
-                        (feature_side == FeatureSide::Interior && seg.interior == 1) ||
-                        (feature_side == FeatureSide::Exterior && seg.interior == 0);
-    if (wanted)
-      result.features.push_back (k);
-  }
+  result.features = segmentsOnSide (result, result.parameters.features);
 }
 
 } // namespace core

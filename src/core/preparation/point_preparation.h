@@ -5,7 +5,7 @@
 #pragma once
 
 #include <pcl_flowseg/common/status.h>
-#include <pcl_flowseg/segmentation/flow_parameters.h>
+#include <pcl_flowseg/common/flow_parameters.h>
 
 #include <Eigen/Core>
 

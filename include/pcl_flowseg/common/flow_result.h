@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <pcl_flowseg/segmentation/flow_parameters.h>
+#include <pcl_flowseg/common/flow_parameters.h>
 
 #include <Eigen/Core>
 
@@ -177,6 +177,11 @@ struct FlowResult
 
   StageTimings timings;
   std::vector<std::string> warnings; ///< human-readable notes about the input
+
+  /** Points with finite coordinates that touch no reported feature (label kNoSegment). */
+  std::size_t unlabelledPoints () const;
+  /** For each segment its index in \a features, or -1 when it is not reported. */
+  std::vector<int> featureOfSegment () const;
 };
 
 } // namespace pcl_flowseg

@@ -2,7 +2,7 @@
  * pcl_flowseg - checking the parameters of a flow segmentation.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/segmentation/flow_parameters.h>
+#include <pcl_flowseg/common/flow_parameters.h>
 
 #include <cmath>
 #include <string>

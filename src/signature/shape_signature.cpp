@@ -1,0 +1,28 @@
+/*
+ * pcl_flowseg - the signature of a shape file: read (or sample), segment, keep the significant features.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/signature/shape_signature.h>
+
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+
+namespace pcl_flowseg {
+
+Status
+signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
+                      double significance, Signature& signature)
+{
+  std::vector<Eigen::Vector3d> points;
+  FlowResult result;
+  Status s = loadShapeSample (path, input, points);
+  if (s.ok)
+    s = runFlowSegmentation (points, params, result);
+  if (s.ok)
+    s = signatureFromSegmentation (result, significance, signature);
+  if (!s.ok && s.message.find (path) == std::string::npos)
+    s.message = path + ": " + s.message;
+  return s;
+}
+
+} // namespace pcl_flowseg
