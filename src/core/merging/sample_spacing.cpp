@@ -1,0 +1,41 @@
+/*
+ * pcl_flowseg - internal: the local sample spacing, the unit of the merge rule's tolerance.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "core/merging/sample_spacing.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace pcl_flowseg {
+namespace core {
+
+std::vector<double>
+nearestNeighbourDistances (const FlowResult& result)
+{
+  const int facets = result.dimension + 1;
+  std::vector<double> nearest (result.vertices.size (), std::numeric_limits<double>::infinity ());
+  for (const FlowCell& cell : result.cells)
+    for (int i = 0; i < facets; ++i)
+      for (int j = i + 1; j < facets; ++j)
+      {
+        const std::size_t a = static_cast<std::size_t> (cell.vertices[i]);
+        const std::size_t b = static_cast<std::size_t> (cell.vertices[j]);
+        const double length = (result.vertices[a] - result.vertices[b]).norm ();
+        nearest[a] = std::min (nearest[a], length);
+        nearest[b] = std::min (nearest[b], length);
+      }
+  return nearest;
+}
+
+double
+saddleSpacing (const SaddleFacet& saddle, const std::vector<double>& nearest, int dimension)
+{
+  double sum = 0.0;
+  for (int k = 0; k < dimension; ++k) // a facet has d vertices
+    sum += nearest[static_cast<std::size_t> (saddle.vertices[static_cast<std::size_t> (k)])];
+  return sum / dimension;
+}
+
+} // namespace core
+} // namespace pcl_flowseg
