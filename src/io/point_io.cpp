@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <pcl_flowseg/io/point_io.h>
-#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/common/system_memory.h>
 
 #include "io/file_extension.h"
 #include "io/point_fields.h"
@@ -165,22 +165,24 @@ loadObj (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXY
   return Status::success ();
 }
 
-/** PCL's PCD reader does not survive every malformed header, so the header is checked first:
-  * known keywords only, consistent field lists, a sane point count, and enough bytes for
-  * binary data. */
-Status
-checkPcdHeader (const std::string& path)
+/** The header of a PCD file, as far as the checks below need it. */
+struct PcdHeader
 {
-  std::ifstream in (path, std::ios::binary);
-  std::string line;
-  std::size_t number = 0;
   std::vector<std::string> fields, sizes, types, counts;
   long long width = -1, height = 1, points = -1;
-  std::string data;
-  while (data.empty () && std::getline (in, line))
+  std::string data; ///< ascii, binary or binary_compressed
+};
+
+/** Reads the header lines up to DATA; fails on anything PCL's reader may not survive. */
+Status
+readPcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
+{
+  std::string line;
+  std::size_t number = 0;
+  while (h.data.empty () && std::getline (in, line))
   {
     if (++number > 64 || line.size () > 4096)
-      return Status::error (path + ": not a PCD file (no DATA line in the header)");
+      break;
     if (!line.empty () && line.back () == '\r')
       line.pop_back ();
     if (line.empty () || line[0] == '#')
@@ -191,69 +193,94 @@ checkPcdHeader (const std::string& path)
     std::vector<std::string> values;
     for (std::string w; words >> w;)
       values.push_back (w);
-    auto integer = [&] (long long& out) {
+    auto integer = [&] (long long& out, const char* what) {
       char* end = nullptr;
-      if (values.size () != 1)
-        return false;
-      out = std::strtoll (values[0].c_str (), &end, 10);
-      return *end == '\0' && out >= 0;
+      out = values.size () == 1 ? std::strtoll (values[0].c_str (), &end, 10) : -1;
+      return values.size () == 1 && *end == '\0' && out >= 0 ? Status::success ()
+                                                             : Status::error (where (path, number) + "invalid " + what);
     };
+    Status ok;
     if (key == "VERSION" || key == "VIEWPOINT")
       continue;
-    else if (key == "FIELDS") fields = values;
-    else if (key == "SIZE") sizes = values;
-    else if (key == "TYPE") types = values;
-    else if (key == "COUNT") counts = values;
-    else if (key == "WIDTH") { if (!integer (width)) return Status::error (where (path, number) + "invalid WIDTH"); }
-    else if (key == "HEIGHT") { if (!integer (height)) return Status::error (where (path, number) + "invalid HEIGHT"); }
-    else if (key == "POINTS") { if (!integer (points)) return Status::error (where (path, number) + "invalid POINTS"); }
+    else if (key == "FIELDS") h.fields = values;
+    else if (key == "SIZE") h.sizes = values;
+    else if (key == "TYPE") h.types = values;
+    else if (key == "COUNT") h.counts = values;
+    else if (key == "WIDTH") ok = integer (h.width, "WIDTH");
+    else if (key == "HEIGHT") ok = integer (h.height, "HEIGHT");
+    else if (key == "POINTS") ok = integer (h.points, "POINTS");
     else if (key == "DATA")
     {
       if (values.size () != 1 || (values[0] != "ascii" && values[0] != "binary" && values[0] != "binary_compressed"))
         return Status::error (where (path, number) + "unknown DATA type");
-      data = values[0];
+      h.data = values[0];
     }
     else
       return Status::error (path + ": not a PCD file (unexpected '" + key.substr (0, 40) + "' at line " +
                             std::to_string (number) + ")");
+    if (!ok)
+      return ok;
   }
-  if (data.empty ())
+  if (h.data.empty ())
     return Status::error (path + ": not a PCD file (no DATA line in the header)");
-  if (fields.empty () || sizes.size () != fields.size () || types.size () != fields.size () ||
-      (!counts.empty () && counts.size () != fields.size ()))
+  return Status::success ();
+}
+
+/** Bytes per point of the header's fields; fails when the field lists or counts are inconsistent. */
+Status
+pcdPointBytes (const std::string& path, PcdHeader& h, long long& point_bytes)
+{
+  if (h.fields.empty () || h.sizes.size () != h.fields.size () || h.types.size () != h.fields.size () ||
+      (!h.counts.empty () && h.counts.size () != h.fields.size ()))
     return Status::error (path + ": malformed PCD header (FIELDS, SIZE, TYPE, COUNT disagree)");
-  if (points < 0)
-    points = width >= 0 ? width * height : -1;
-  if (points < 0 || points > 2000000000LL || (width >= 0 && width * height != points))
+  if (h.points < 0)
+    h.points = h.width >= 0 ? h.width * h.height : -1;
+  if (h.points < 0 || h.points > 2000000000LL || (h.width >= 0 && h.width * h.height != h.points))
     return Status::error (path + ": malformed PCD header (WIDTH x HEIGHT and POINTS disagree or are missing)");
-  long long point_bytes = 0;
-  for (std::size_t k = 0; k < fields.size (); ++k)
+  point_bytes = 0;
+  for (std::size_t k = 0; k < h.fields.size (); ++k)
   {
-    const std::string& size = sizes[k];
-    const std::string& type = types[k];
+    const std::string& size = h.sizes[k];
+    const std::string& type = h.types[k];
     if ((size != "1" && size != "2" && size != "4" && size != "8") || (type != "I" && type != "U" && type != "F"))
-      return Status::error (path + ": malformed PCD header (field '" + fields[k] + "' has an invalid SIZE/TYPE)");
+      return Status::error (path + ": malformed PCD header (field '" + h.fields[k] + "' has an invalid SIZE/TYPE)");
     long long count = 1;
-    if (!counts.empty ())
+    if (!h.counts.empty ())
     {
       char* end = nullptr;
-      count = std::strtoll (counts[k].c_str (), &end, 10);
+      count = std::strtoll (h.counts[k].c_str (), &end, 10);
       if (*end != '\0' || count < 1 || count > 100000)
         return Status::error (path + ": malformed PCD header (invalid COUNT)");
     }
     point_bytes += count * std::stoll (size);
   }
-  const std::size_t available = availableMemory ();
-  if (available > 0 && static_cast<double> (points) * static_cast<double> (point_bytes + 16) > 0.5 * static_cast<double> (available))
-    return Status::error (path + ": " + std::to_string (points) + " points would not fit in the available memory: refused");
-  if (data == "binary")
+  return Status::success ();
+}
+
+/** PCL's PCD reader does not survive every malformed header, so the header is checked first:
+  * known keywords only, consistent field lists, a sane point count that fits in memory, and
+  * enough bytes for binary data. */
+Status
+checkPcdHeader (const std::string& path)
+{
+  std::ifstream in (path, std::ios::binary);
+  PcdHeader h;
+  long long point_bytes = 0;
+  if (const Status s = readPcdHeader (path, in, h); !s)
+    return s;
+  if (const Status s = pcdPointBytes (path, h, point_bytes); !s)
+    return s;
+  const std::size_t memory = availableMemory ();
+  if (memory > 0 && static_cast<double> (h.points) * static_cast<double> (point_bytes + 16) > 0.5 * static_cast<double> (memory))
+    return Status::error (path + ": " + std::to_string (h.points) + " points would not fit in the available memory: refused");
+  if (h.data == "binary")
   {
     const std::streampos start = in.tellg ();
     in.seekg (0, std::ios::end);
     const long long available = static_cast<long long> (in.tellg () - start);
-    if (available < points * point_bytes)
+    if (available < h.points * point_bytes)
       return Status::error (path + ": truncated PCD file (" + std::to_string (available) + " data bytes, header promises " +
-                            std::to_string (points * point_bytes) + ")");
+                            std::to_string (h.points * point_bytes) + ")");
   }
   return Status::success ();
 }

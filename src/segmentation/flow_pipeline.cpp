@@ -17,7 +17,6 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <new>
 
 namespace pcl_flowseg {
@@ -227,19 +226,6 @@ estimateSegmentationMemory (std::size_t points, int dimension)
 {
   // Measured peaks (docs/measurements.md): about 3 KiB per point in 3D, 1 KiB in 2D.
   return points * (dimension == 2 ? 1024u : 3072u);
-}
-
-std::size_t
-availableMemory ()
-{
-  std::ifstream meminfo ("/proc/meminfo");
-  std::string key;
-  std::size_t value = 0;
-  std::string unit;
-  while (meminfo >> key >> value >> unit)
-    if (key == "MemAvailable:")
-      return value * 1024;
-  return 0;
 }
 
 Status

@@ -87,6 +87,110 @@ rotationBetween (const Eigen::Vector3d& from, const Eigen::Vector3d& to)
   return Eigen::Quaterniond::FromTwoVectors (from, to).toRotationMatrix ();
 }
 
+/** Scores alignments of signature b onto signature a and keeps the best in \a best. */
+class AlignmentScorer
+{
+public:
+  AlignmentScorer (const Signature& a, const Signature& b, double threshold, SignatureMatcher::Result& best)
+    : a_ (a), b_ (b), index_ (a), threshold2_ (threshold * threshold), best_ (best), partner_of_a_ (a.points.size ()),
+      queries_ (3 * b.points.size ())
+  {
+  }
+
+  /** The paper's score of x_a = linear * x_b + translation: every point of b whose nearest point
+    * of a lies within the threshold adds 1 - |w_p - w_q| / (w_p + w_q); every point of either
+    * without a partner subtracts its weight. */
+  void
+  score (const Eigen::Matrix3d& linear, const Eigen::Vector3d& translation, bool mirrored)
+  {
+    std::fill (partner_of_a_.begin (), partner_of_a_.end (), 0);
+    pairs_.clear ();
+    for (std::size_t j = 0; j < b_.points.size (); ++j)
+    {
+      const Eigen::Vector3d q = linear * b_.points[j].position + translation;
+      for (int k = 0; k < 3; ++k)
+        queries_[3 * j + static_cast<std::size_t> (k)] = static_cast<float> (q[k]);
+    }
+    index_.nearest (queries_, b_.points.size (), ids_, dist_);
+    double s = 0.0;
+    for (std::size_t j = 0; j < b_.points.size (); ++j)
+    {
+      const double wq = b_.points[j].weight;
+      if (ids_[j] >= 0 && dist_[j] <= threshold2_)
+      {
+        const double wp = a_.points[static_cast<std::size_t> (ids_[j])].weight;
+        s += 1.0 - std::abs (wp - wq) / (wp + wq);
+        partner_of_a_[static_cast<std::size_t> (ids_[j])] = 1;
+        pairs_.emplace_back (ids_[j], static_cast<int> (j));
+      }
+      else
+        s -= wq;
+    }
+    for (std::size_t i = 0; i < a_.points.size (); ++i)
+      if (!partner_of_a_[i])
+        s -= a_.points[i].weight;
+    ++best_.alignments;
+    if (s > best_.score)
+    {
+      best_.score = s;
+      best_.linear = linear;
+      best_.translation = translation;
+      best_.mirrored = mirrored;
+      best_.pairs = pairs_;
+    }
+  }
+
+private:
+  const Signature& a_;
+  const Signature& b_;
+  const PointIndex index_;
+  const double threshold2_;
+  SignatureMatcher::Result& best_;
+  std::vector<int> partner_of_a_;
+  std::vector<std::pair<int, int>> pairs_;
+  std::vector<float> queries_;
+  std::vector<int> ids_;
+  std::vector<float> dist_;
+};
+
+/** The alignments that turn b's segment (heaviest point, point j) onto a's (heaviest, point i):
+  * in 3D the rotation about that axis is fixed by every pair of third points (k of a, l of b);
+  * without such a pair the axis alignment alone is scored. \a m mirrors b or not. */
+void
+scoreAlongAxis (const Signature& a, const Signature& b, std::size_t i, std::size_t j, std::size_t ma, std::size_t mb,
+                const Eigen::Matrix3d& m, bool mirrored, AlignmentScorer& scorer)
+{
+  const Eigen::Vector3d a0 = a.points[0].position;
+  const Eigen::Vector3d b0 = m * b.points[0].position;
+  const Eigen::Vector3d axis = (a.points[i].position - a0).normalized ();
+  const Eigen::Matrix3d r1 = rotationBetween ((m * b.points[j].position - b0).normalized (), axis);
+  bool fixed = false;
+  for (std::size_t k = 1; k < ma; ++k)
+  {
+    if (k == i)
+      continue;
+    Eigen::Vector3d pa = a.points[k].position - a0;
+    pa -= pa.dot (axis) * axis;
+    if (pa.norm () < 1e-9)
+      continue;
+    for (std::size_t l = 1; l < mb; ++l)
+    {
+      if (l == j)
+        continue;
+      Eigen::Vector3d pb = r1 * (m * b.points[l].position - b0);
+      pb -= pb.dot (axis) * axis;
+      if (pb.norm () < 1e-9)
+        continue;
+      const double angle = std::atan2 (axis.dot (pb.cross (pa)), pb.dot (pa));
+      const Eigen::Matrix3d r = Eigen::AngleAxisd (angle, axis).toRotationMatrix () * r1;
+      scorer.score (r * m, a0 - r * b0, mirrored);
+      fixed = true;
+    }
+  }
+  if (!fixed)
+    scorer.score (r1 * m, a0 - r1 * b0, mirrored);
+}
+
 } // namespace
 
 SignatureMatcher::Result
@@ -94,52 +198,7 @@ SignatureMatcher::alignOnto (const Signature& a, const Signature& b) const
 {
   Result best;
   best.score = -std::numeric_limits<double>::infinity ();
-  const PointIndex index (a);
-  const double threshold2 = threshold_ * threshold_;
-  std::vector<int> partner_of_a (a.points.size ());
-  std::vector<std::pair<int, int>> pairs;
-  std::vector<float> queries (3 * b.points.size ());
-  std::vector<int> ids;
-  std::vector<float> dist;
-
-  auto score = [&] (const Eigen::Matrix3d& linear, const Eigen::Vector3d& translation, bool mirrored) {
-    std::fill (partner_of_a.begin (), partner_of_a.end (), 0);
-    pairs.clear ();
-    for (std::size_t j = 0; j < b.points.size (); ++j)
-    {
-      const Eigen::Vector3d q = linear * b.points[j].position + translation;
-      for (int k = 0; k < 3; ++k)
-        queries[3 * j + static_cast<std::size_t> (k)] = static_cast<float> (q[k]);
-    }
-    index.nearest (queries, b.points.size (), ids, dist);
-    double s = 0.0;
-    for (std::size_t j = 0; j < b.points.size (); ++j)
-    {
-      const double wq = b.points[j].weight;
-      if (ids[j] >= 0 && dist[j] <= threshold2)
-      {
-        const double wp = a.points[static_cast<std::size_t> (ids[j])].weight;
-        s += 1.0 - std::abs (wp - wq) / (wp + wq);
-        partner_of_a[static_cast<std::size_t> (ids[j])] = 1;
-        pairs.emplace_back (ids[j], static_cast<int> (j));
-      }
-      else
-        s -= wq;
-    }
-    for (std::size_t i = 0; i < a.points.size (); ++i)
-      if (!partner_of_a[i])
-        s -= a.points[i].weight;
-    ++best.alignments;
-    if (s > best.score)
-    {
-      best.score = s;
-      best.linear = linear;
-      best.translation = translation;
-      best.mirrored = mirrored;
-      best.pairs = pairs;
-    }
-  };
-
+  AlignmentScorer scorer (a, b, threshold_, best);
   const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (std::max (1, alignment_points_)));
   const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (std::max (1, alignment_points_)));
   const Eigen::Vector3d a0 = a.points[0].position;
@@ -148,47 +207,11 @@ SignatureMatcher::alignOnto (const Signature& a, const Signature& b) const
     const Eigen::Matrix3d m = mirror ? Eigen::Vector3d (-1, 1, 1).asDiagonal ().toDenseMatrix () : Eigen::Matrix3d::Identity ();
     const Eigen::Vector3d b0 = m * b.points[0].position;
     // Heaviest points together, no rotation: the only alignment when either has a single point.
-    score (m, a0 - b0, mirror == 1);
+    scorer.score (m, a0 - b0, mirror == 1);
     for (std::size_t i = 1; i < ma; ++i)
-    {
-      const Eigen::Vector3d ua = a.points[i].position - a0;
-      if (ua.norm () == 0.0)
-        continue;
       for (std::size_t j = 1; j < mb; ++j)
-      {
-        const Eigen::Vector3d ub = m * b.points[j].position - b0;
-        if (ub.norm () == 0.0)
-          continue;
-        const Eigen::Vector3d axis = ua.normalized ();
-        const Eigen::Matrix3d r1 = rotationBetween (ub.normalized (), axis);
-        bool fixed = false;
-        // The rotation about the axis: every pair of third points.
-        for (std::size_t k = 1; k < ma; ++k)
-        {
-          if (k == i)
-            continue;
-          Eigen::Vector3d pa = a.points[k].position - a0;
-          pa -= pa.dot (axis) * axis;
-          if (pa.norm () < 1e-9)
-            continue;
-          for (std::size_t l = 1; l < mb; ++l)
-          {
-            if (l == j)
-              continue;
-            Eigen::Vector3d pb = r1 * (m * b.points[l].position - b0);
-            pb -= pb.dot (axis) * axis;
-            if (pb.norm () < 1e-9)
-              continue;
-            const double angle = std::atan2 (axis.dot (pb.cross (pa)), pb.dot (pa));
-            const Eigen::Matrix3d r = Eigen::AngleAxisd (angle, axis).toRotationMatrix () * r1;
-            score (r * m, a0 - r * b0, mirror == 1);
-            fixed = true;
-          }
-        }
-        if (!fixed)
-          score (r1 * m, a0 - r1 * b0, mirror == 1);
-      }
-    }
+        if ((a.points[i].position - a0).norm () != 0.0 && (m * b.points[j].position - b0).norm () != 0.0)
+          scoreAlongAxis (a, b, i, j, ma, mb, m, mirror == 1, scorer);
   }
   return best;
 }

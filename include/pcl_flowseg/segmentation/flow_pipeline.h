@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_flowseg/common/status.h>
+#include <pcl_flowseg/common/system_memory.h>
 #include <pcl_flowseg/common/flow_parameters.h>
 #include <pcl_flowseg/common/flow_result.h>
 
@@ -24,10 +25,6 @@ using ProgressCallback = std::function<void (const std::string& stage, double fr
   * 0 = not known yet, taken as 3), interior/exterior separation and denoising included. */
 std::size_t
 estimateSegmentationMemory (std::size_t points, int dimension);
-
-/** \brief Memory the system reports available (Linux MemAvailable), in bytes; 0 when unknown. */
-std::size_t
-availableMemory ();
 
 /** \brief Runs the whole flow segmentation on raw coordinates.
   * \param[in] points input coordinates; NaN/Inf points are skipped and counted, duplicates take

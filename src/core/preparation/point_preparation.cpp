@@ -83,15 +83,10 @@ putInSpatialOrder (PreparedPoints& out)
       v = new_index[static_cast<std::size_t> (v)];
 }
 
-} // namespace
-
-Status
-preparePoints (const std::vector<Eigen::Vector3d>& points, const PreparationParameters& params,
-               PreparedPoints& out, std::vector<std::string>& warnings)
+/** The finite points of the input, in input order; non-finite ones are counted. */
+std::vector<int>
+finitePoints (const std::vector<Eigen::Vector3d>& points, PreparedPoints& out)
 {
-  out = PreparedPoints ();
-  out.point_to_vertex.assign (points.size (), -1);
-
   std::vector<int> finite;
   finite.reserve (points.size ());
   for (std::size_t i = 0; i < points.size (); ++i)
@@ -101,12 +96,14 @@ preparePoints (const std::vector<Eigen::Vector3d>& points, const PreparationPara
     else
       ++out.non_finite;
   }
-  if (out.non_finite > 0)
-    warnings.push_back (std::to_string (out.non_finite) + " point(s) with NaN/Inf coordinates skipped (label kNoSegment)");
-  if (finite.empty ())
-    return Status::error (points.empty () ? "the input cloud is empty" : "the input cloud has no finite point");
+  return finite;
+}
 
-  // Duplicates: sort by coordinates, every copy maps to the first copy in input order.
+/** One vertex per distinct finite point, in first-seen order: every copy maps to the first copy
+  * in input order (found by sorting by coordinates). */
+void
+mergeDuplicates (const std::vector<Eigen::Vector3d>& points, const std::vector<int>& finite, PreparedPoints& out)
+{
   std::vector<int> sorted = finite;
   std::stable_sort (sorted.begin (), sorted.end (), [&] (int a, int b) {
     return lexLess (points[static_cast<std::size_t> (a)], points[static_cast<std::size_t> (b)]);
@@ -135,73 +132,106 @@ preparePoints (const std::vector<Eigen::Vector3d>& points, const PreparationPara
       ++out.duplicates;
     }
   }
-  if (out.duplicates > 0)
-    warnings.push_back (std::to_string (out.duplicates) + " duplicate point(s) share the vertex (and label) of their first copy");
-  putInSpatialOrder (out);
+}
 
-  // Best-fit plane: spread of the points along the normal, relative to the bounding box.
-  Eigen::Vector3d lo = out.vertices.front (), hi = out.vertices.front ();
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
-  for (const auto& v : out.vertices)
+/** The best-fit plane of the vertices and how flat they are. */
+struct PlaneFit
+{
+  Eigen::Vector3d mean, normal, axis_u, axis_v;
+  double thickness = 0.0; ///< largest distance from the plane
+  double diagonal = 0.0;  ///< of the bounding box
+  int constant_axis = -1; ///< an axis along which every vertex has the same coordinate, or -1
+};
+
+PlaneFit
+fitPlane (const std::vector<Eigen::Vector3d>& vertices)
+{
+  PlaneFit fit;
+  Eigen::Vector3d lo = vertices.front (), hi = vertices.front ();
+  fit.mean = Eigen::Vector3d::Zero ();
+  for (const auto& v : vertices)
   {
     lo = lo.cwiseMin (v);
     hi = hi.cwiseMax (v);
-    mean += v;
+    fit.mean += v;
   }
-  mean /= static_cast<double> (out.vertices.size ());
+  fit.mean /= static_cast<double> (vertices.size ());
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
-  for (const auto& v : out.vertices)
-    cov += (v - mean) * (v - mean).transpose ();
+  for (const auto& v : vertices)
+    cov += (v - fit.mean) * (v - fit.mean).transpose ();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (cov);
-  const Eigen::Vector3d normal = solver.eigenvectors ().col (0);
-  const Eigen::Vector3d axis_u = solver.eigenvectors ().col (2);
-  const Eigen::Vector3d axis_v = solver.eigenvectors ().col (1);
-  double thickness = 0.0;
-  for (const auto& v : out.vertices)
-    thickness = std::max (thickness, std::abs ((v - mean).dot (normal)));
-  const double diagonal = (hi - lo).norm ();
-  int constant_axis = -1;
+  fit.normal = solver.eigenvectors ().col (0);
+  fit.axis_u = solver.eigenvectors ().col (2);
+  fit.axis_v = solver.eigenvectors ().col (1);
+  for (const auto& v : vertices)
+    fit.thickness = std::max (fit.thickness, std::abs ((v - fit.mean).dot (fit.normal)));
+  fit.diagonal = (hi - lo).norm ();
   for (int a = 2; a >= 0; --a)
     if (lo[a] == hi[a])
-      constant_axis = a;
-  out.thickness = constant_axis >= 0 ? 0.0 : thickness;
-  const bool flat = constant_axis >= 0 || thickness <= params.planar_tolerance * diagonal;
+      fit.constant_axis = a;
+  return fit;
+}
 
-  switch (params.dimension)
+/** Plane coordinates of the vertices: the constant axis dropped exactly when there is one (no
+  * rounding from a change of basis), else the best-fit plane's basis, the 3D vertices then moved
+  * onto that plane so that both describe the same geometry. */
+void
+projectToPlane (const PlaneFit& fit, PreparedPoints& out)
+{
+  out.planar.reserve (out.vertices.size ());
+  for (const auto& v : out.vertices)
   {
-    case DimensionMode::Automatic: out.dimension = flat ? 2 : 3; break;
-    case DimensionMode::Planar: out.dimension = 2; break;
-    case DimensionMode::Spatial: out.dimension = 3; break;
+    if (fit.constant_axis >= 0)
+    {
+      const int a = fit.constant_axis == 0 ? 1 : 0;
+      const int b = fit.constant_axis == 2 ? 1 : 2;
+      out.planar.emplace_back (v[a], v[b]);
+    }
+    else
+      out.planar.emplace_back ((v - fit.mean).dot (fit.axis_u), (v - fit.mean).dot (fit.axis_v));
   }
-  if (out.dimension == 2 && !flat)
+  if (fit.constant_axis < 0)
+    for (std::size_t k = 0; k < out.vertices.size (); ++k)
+      out.vertices[k] = fit.mean + out.planar[k].x () * fit.axis_u + out.planar[k].y () * fit.axis_v;
+}
+
+/** The dimension of the flow: forced, or 2 when the vertices are flat. */
+int
+chooseDimension (const PreparationParameters& params, const PlaneFit& fit, std::vector<std::string>& warnings)
+{
+  const bool flat = fit.constant_axis >= 0 || fit.thickness <= params.planar_tolerance * fit.diagonal;
+  const int dimension = params.dimension == DimensionMode::Planar ? 2 : params.dimension == DimensionMode::Spatial ? 3 : (flat ? 2 : 3);
+  if (dimension == 2 && !flat)
   {
     std::ostringstream s;
-    s << "2D mode on points that are not planar (spread " << thickness << " normal to the best-fit plane, diagonal "
-      << diagonal << "): points are projected onto that plane";
+    s << "2D mode on points that are not planar (spread " << fit.thickness << " normal to the best-fit plane, diagonal "
+      << fit.diagonal << "): points are projected onto that plane";
     warnings.push_back (s.str ());
   }
+  return dimension;
+}
+} // namespace
+
+Status
+preparePoints (const std::vector<Eigen::Vector3d>& points, const PreparationParameters& params,
+               PreparedPoints& out, std::vector<std::string>& warnings)
+{
+  out = PreparedPoints ();
+  out.point_to_vertex.assign (points.size (), -1);
+  const std::vector<int> finite = finitePoints (points, out);
+  if (out.non_finite > 0)
+    warnings.push_back (std::to_string (out.non_finite) + " point(s) with NaN/Inf coordinates skipped (label kNoSegment)");
+  if (finite.empty ())
+    return Status::error (points.empty () ? "the input cloud is empty" : "the input cloud has no finite point");
+  mergeDuplicates (points, finite, out);
+  if (out.duplicates > 0)
+    warnings.push_back (std::to_string (out.duplicates) + " duplicate point(s) share the vertex (and label) of their first copy");
+  putInSpatialOrder (out);
+  const PlaneFit fit = fitPlane (out.vertices);
+  out.thickness = fit.constant_axis >= 0 ? 0.0 : fit.thickness;
+  out.dimension = chooseDimension (params, fit, warnings);
   if (out.dimension == 2)
-  {
-    out.planar.reserve (out.vertices.size ());
-    for (const auto& v : out.vertices)
-    {
-      if (constant_axis >= 0)
-      {
-        // Drop the constant axis exactly (no rounding from a change of basis).
-        const int a = constant_axis == 0 ? 1 : 0;
-        const int b = constant_axis == 2 ? 1 : 2;
-        out.planar.emplace_back (v[a], v[b]);
-      }
-      else
-        out.planar.emplace_back ((v - mean).dot (axis_u), (v - mean).dot (axis_v));
-    }
-    if (constant_axis < 0)
-    {
-      // Keep the 3D vertices consistent with the plane the flow is computed in.
-      for (std::size_t k = 0; k < out.vertices.size (); ++k)
-        out.vertices[k] = mean + out.planar[k].x () * axis_u + out.planar[k].y () * axis_v;
-    }
-  }
+    projectToPlane (fit, out);
   return Status::success ();
 }
 

@@ -1,0 +1,19 @@
+/*
+ * pcl_flowseg - internal: is the interior/exterior boundary a closed manifold?
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/common/flow_result.h>
+
+namespace pcl_flowseg {
+namespace core {
+
+/** \brief Recomputes FlowResult::interior's figures from the cells' inside flags: inside volume
+  * and cells, boundary facets, non-manifold edges (3D) and vertices, samples off the boundary,
+  * closed and manifold. The other fields of the report are left as they are. */
+void
+measureBoundary (FlowResult& result);
+
+} // namespace core
+} // namespace pcl_flowseg
