@@ -4,7 +4,7 @@
  */
 #include "mesh_picture.h"
 
-#include <pcl_flowseg/evaluation/retrieval.h>
+#include <pcl_flowseg/evaluation/png_writer.h>
 
 #include <Eigen/Eigenvalues>
 

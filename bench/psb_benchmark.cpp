@@ -36,7 +36,7 @@ namespace {
 namespace fs = std::filesystem;
 using pcl_flowseg::Status;
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN ();
-constexpr std::size_t kGeneratedPoints = 4000;
+constexpr std::size_t kGeneratedPoints = pcl_flowseg::kSamplePoints3D;
 
 struct Options
 {

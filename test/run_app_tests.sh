@@ -107,7 +107,7 @@ expect "unwritable output" 1 "cannot write" -- "$seg" "$src/samples/star2d.pcd" 
 # --- sample generator ----------------------------------------------------------------------
 expect "generator" 0 "wrote" -- "$gen" --output "$work" --points2d 300 --points3d 400
 [ "$(grep -m1 '^POINTS' "$work/animal3d.pcd" | awk '{print $2}')" = "400" ]; check "generator point count" $?
-expect "generator bad option" 2 "bad or incomplete" -- "$gen" --points2d -5
+expect "generator bad option" 2 "points2d needs a whole number" -- "$gen" --points2d -5
 
 # --- mesh sampler ----------------------------------------------------------------------------
 smp="$build/apps/flowseg_sample"
@@ -144,7 +144,21 @@ expect "segment bad compact rho" 2 "compact-rho" -- "$seg" "$src/samples/star2d.
 expect "segment bad tolerance" 2 "tolerance" -- "$seg" "$src/samples/star2d.pcd" --tolerance -1
 expect "segment bad stump ratio" 2 "stump-ratio" -- "$seg" "$src/samples/star2d.pcd" --stump-ratio 0.5
 expect "segment threads" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/threads" -j 1
+expect "segment threads attached" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/threads1" -j1
+expect "segment threads with =" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/threads2" --threads=1
+expect "segment all threads" 0 "segments after merging" -- "$seg" "$src/samples/star2d.pcd" -o "$work/threads0" --threads 0
+for t in threads1 threads2 threads0; do
+  cmp -s "$work/threads.labels.pcd" "$work/$t.labels.pcd"; check "labels do not depend on how threads are given ($t)" $?
+done
+expect "segment threads absurd" 2 "threads needs a whole number" -- "$seg" "$src/samples/star2d.pcd" -j -1
+expect "segment option with a value it does not take" 2 "takes no value" -- "$seg" "$src/samples/star2d.pcd" --binary=yes
+for app in flowseg_segment flowseg_db flowseg_eval flowseg_signature flowseg_match; do
+  "$build/apps/$app" --help | grep -q -- "-j, --threads N        worker threads: 0 = all cores, 1 = sequential (default 0)"
+  check "$app documents -j, --threads the same way" $?
+done
 expect "db build" 0 "9 shapes" -- "$db" build "$work/shapes.db" "$work/tree" -j 2
+expect "db build, --jobs as before" 0 "9 shapes" -- "$db" build "$work/shapes2.db" "$work/tree" --jobs 2
+cmp -s "$work/shapes.db" "$work/shapes2.db"; check "the same database whatever the thread option's name" $?
 expect "db list" 0 "snowman3d" -- "$db" list "$work/shapes.db"
 expect "db query finds the class" 0 "^1.*snowman3d" -- "$db" query "$work/shapes.db" "$work/tree/snowman3d/snowman3d-1.pcd" -k 3
 expect "db add" 0 "10 shapes" -- "$db" add "$work/shapes.db" "$src/samples/hand2d.pcd" --label hand

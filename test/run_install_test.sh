@@ -8,7 +8,7 @@ work=$(mktemp -d /tmp/flowseg_install_XXXXXX)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 test -f "$work/prefix/include/pcl_flowseg/segmentation/flow_segmentation.h"
-test -f "$work/prefix/include/pcl_flowseg/evaluation/retrieval.h"
+test -f "$work/prefix/include/pcl_flowseg/evaluation/retrieval_scores.h"
 test -f "$work/prefix/lib/cmake/pcl_flowseg/pcl_flowsegConfig.cmake" || test -f "$work"/prefix/lib/*/cmake/pcl_flowseg/pcl_flowsegConfig.cmake
 if grep -rl "CGAL/" "$work/prefix/include/pcl_flowseg" >/dev/null; then
   echo "FAILED: a public header includes CGAL"; exit 1

@@ -4,12 +4,20 @@
  */
 #include "test_support.h"
 
-#include <pcl_flowseg/evaluation/retrieval.h>
+#include <pcl_flowseg/common/parallel_jobs.h>
+#include <pcl_flowseg/evaluation/png_writer.h>
+#include <pcl_flowseg/evaluation/retrieval_figures.h>
+#include <pcl_flowseg/evaluation/retrieval_report.h>
+#include <pcl_flowseg/evaluation/retrieval_scores.h>
+#include <pcl_flowseg/evaluation/shape_distributions.h>
 #include <pcl_flowseg/signature/signature_database.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <unistd.h>
 
@@ -186,4 +194,52 @@ TEST (Database, CandidateIndexAlignsTheNearestSummariesFirst)
   EXPECT_FALSE (db.add (entry ("copy", "target", {WeightedPoint{Eigen::Vector3d (0, 0, 0), 1.0}})));
   EXPECT_EQ (db.size (), 81u);
   EXPECT_NE (db.entries ()[db.query (query, 1, matcher)[0].entry].name, "copy");
+}
+
+TEST (ParallelJobs, EveryJobOnceAndProgressCountsUp)
+{
+  for (unsigned threads : {1u, 2u, 0u})
+  {
+    std::vector<int> runs (57, 0);
+    std::vector<std::size_t> dones;
+    runParallelJobs (runs.size (), threads, [&] (std::size_t i) { ++runs[i]; },
+                     [&] (std::size_t done, std::size_t index) {
+                       dones.push_back (done);
+                       EXPECT_EQ (runs[index], 1);
+                     });
+    EXPECT_EQ (std::count (runs.begin (), runs.end (), 1), 57) << threads;
+    ASSERT_EQ (dones.size (), 57u);
+    for (std::size_t k = 0; k < dones.size (); ++k)
+      EXPECT_EQ (dones[k], k + 1);
+  }
+  EXPECT_GE (jobThreads (0), 1u);
+  EXPECT_EQ (jobThreads (3), 3u);
+  runParallelJobs (0, 2, [] (std::size_t) { ADD_FAILURE () << "no job to run"; });
+}
+
+TEST (Retrieval, SimilarityMatrixAndScoresFile)
+{
+  const std::vector<std::string> labels = {"a", "a", "b", "b"};
+  auto sim = [&] (std::size_t i, std::size_t j) { return labels[i] == labels[j] ? 1.0 + 0.1 * i : 0.1 * static_cast<double> (j); };
+  const auto m = similarityMatrix (labels.size (), sim, 2);
+  ASSERT_EQ (m.size (), 4u);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 4; ++j)
+      EXPECT_EQ (m[i][j], sim (i, j));
+  MethodEvaluation e;
+  e.name = "flow\"seg";
+  e.scores = scoreRetrieval (m, labels);
+  EXPECT_EQ (e.scores.nearest_neighbour, 1.0);
+  char dir[] = "/tmp/flowseg_scores_XXXXXX";
+  ASSERT_NE (mkdtemp (dir), nullptr);
+  const std::string path = std::string (dir) + "/scores.json";
+  ASSERT_TRUE (writeRetrievalScoresJson (path, "root \"x\"", 4, true, {e}));
+  std::ifstream in (path);
+  const std::string json ((std::istreambuf_iterator<char> (in)), std::istreambuf_iterator<char> ());
+  EXPECT_NE (json.find ("\"root\": \"root \\\"x\\\"\""), std::string::npos) << json;
+  EXPECT_NE (json.find ("\"flow\\\"seg\": {\"nearest_neighbour\": 1.0000"), std::string::npos) << json;
+  EXPECT_NE (json.find ("\"bulls_eye\": 1"), std::string::npos) << json;
+  EXPECT_FALSE (writeRetrievalScoresJson (std::string (dir) + "/no/such/dir/scores.json", "r", 4, false, {e}));
+  std::remove (path.c_str ());
+  rmdir (dir);
 }

@@ -15,6 +15,7 @@
 #include <pcl_flowseg/io/silhouette.h>
 
 #include <pcl_flowseg/io/atomic_file.h>
+#include <pcl_flowseg/io/json_text.h>
 
 #include <pcl/io/pcd_io.h>
 
@@ -282,4 +283,55 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
     ++checked;
   }
   EXPECT_EQ (checked, 2u);
+}
+
+TEST (PointIO, PointNormalCloudCarriesNormalsAndViewpoint)
+{
+  TempDir dir;
+  std::ofstream (dir.file ("n.xyz")) << "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 -1\n";
+  pcl::PointCloud<pcl::PointNormal> cloud;
+  bool has_normals = false;
+  ASSERT_TRUE (loadPointCloud (dir.file ("n.xyz"), cloud, has_normals));
+  EXPECT_TRUE (has_normals);
+  ASSERT_EQ (cloud.size (), 3u);
+  EXPECT_EQ (cloud[2].normal_z, -1.0f);
+  EXPECT_EQ (cloud[1].x, 1.0f);
+  pcl::PointCloud<pcl::PointXYZ> plain;
+  plain.push_back (pcl::PointXYZ (1, 2, 3));
+  plain.sensor_origin_ = Eigen::Vector4f (4, 5, 6, 0);
+  ASSERT_EQ (pcl::io::savePCDFileASCII (dir.file ("v.pcd"), plain), 0);
+  ASSERT_TRUE (loadPointCloud (dir.file ("v.pcd"), cloud, has_normals));
+  EXPECT_FALSE (has_normals);
+  EXPECT_EQ (cloud[0].normal_x, 0.0f);
+  EXPECT_EQ (cloud.sensor_origin_, Eigen::Vector4f (4, 5, 6, 0));
+  EXPECT_FALSE (loadPointCloud (dir.file ("none.pcd"), cloud, has_normals));
+  EXPECT_TRUE (cloud.empty ());
+}
+
+TEST (PointIO, ShapeInputOptionsAreChecked)
+{
+  ShapeInputOptions o;
+  EXPECT_TRUE (checkShapeInputOptions (o));
+  o.mesh_points = 3;
+  EXPECT_FALSE (checkShapeInputOptions (o));
+  o.mesh_points = 100000001;
+  EXPECT_FALSE (checkShapeInputOptions (o));
+}
+
+TEST (ResultWriter, JsonTextIsEscapedAndTextFilesAreAtomic)
+{
+  EXPECT_EQ (jsonString ("a\"b\\c\nd\te\x01"), "\"a\\\"b\\\\c\\nd\\te\\u0001\"");
+  EXPECT_EQ (jsonNumber (std::nan ("")), "null");
+  EXPECT_EQ (jsonNumber (1.0 / 0.0), "null");
+  EXPECT_EQ (jsonNumber (0.125), "0.125");
+  TempDir dir;
+  ASSERT_TRUE (writeTextFileAtomically (dir.file ("t.txt"), [] (std::ostream& out) { out << "whole"; }));
+  EXPECT_EQ (slurp (dir.file ("t.txt")), "whole");
+  EXPECT_FALSE (writeTextFileAtomically (dir.file ("no/such/t.txt"), [] (std::ostream& out) { out << "x"; }));
+  const Status thrown = writeTextFileAtomically (dir.file ("u.txt"), [] (std::ostream& out) {
+    out << "half";
+    throw std::runtime_error ("boom");
+  });
+  EXPECT_FALSE (thrown);
+  EXPECT_FALSE (std::ifstream (dir.file ("u.txt")).good ());
 }

@@ -5,10 +5,13 @@
 #include "test_support.h"
 
 #include <pcl_flowseg/signature/feature_signature.h>
+#include <pcl_flowseg/signature/shape_signature.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 using namespace pcl_flowseg;
@@ -167,4 +170,90 @@ TEST (FeatureSignature, PclStyle)
   fs.setInputCloud (tiny);
   EXPECT_FALSE (fs.compute (s));
   EXPECT_FALSE (fs.getLastError ().empty ());
+}
+
+TEST (Match, ParametersRoundTripAndAreChecked)
+{
+  pcl::SignatureMatcher matcher;
+  EXPECT_EQ (matcher.getThreshold (), MatchParameters ().threshold);
+  MatchParameters p;
+  p.threshold = 0.25;
+  p.allow_mirror = false;
+  p.alignment_points = 6;
+  matcher.setParameters (p);
+  EXPECT_EQ (matcher.getThreshold (), 0.25);
+  EXPECT_FALSE (matcher.getAllowMirror ());
+  EXPECT_EQ (matcher.getAlignmentPoints (), 6);
+  EXPECT_TRUE (checkMatchParameters (p));
+  for (double t : {0.0, -1.0, std::nan ("")})
+  {
+    MatchParameters bad;
+    bad.threshold = t;
+    const Status s = checkMatchParameters (bad);
+    EXPECT_FALSE (s);
+    EXPECT_NE (s.message.find ("threshold"), std::string::npos) << s.message;
+  }
+  MatchParameters bad;
+  bad.alignment_points = 0;
+  EXPECT_FALSE (checkMatchParameters (bad));
+}
+
+TEST (Signature, SignificanceIsDecidedInOnePlace)
+{
+  const FlowResult r = flowseg_test::segmentOrDie (flowseg_test::shapeSample ("animal3d", 2500), flowseg_test::kDefaultMerge.rho,
+                                                   DimensionMode::Automatic, true);
+  const std::vector<int> interior = segmentsOnSide (r, FeatureSide::Interior);
+  EXPECT_EQ (interior, r.features); // the result reports the interior by default
+  double total = 0.0;
+  for (int k : interior)
+  {
+    EXPECT_EQ (r.segments[static_cast<std::size_t> (k)].interior, 1);
+    total += r.segments[static_cast<std::size_t> (k)].volume;
+  }
+  const std::vector<int> significant = significantSegments (r, interior, 0.05);
+  std::size_t expected = 0;
+  for (int k : interior)
+    expected += r.segments[static_cast<std::size_t> (k)].volume > 0.05 * total;
+  EXPECT_EQ (significant.size (), expected);
+  EXPECT_LT (significant.size (), interior.size ());
+  Signature s;
+  ASSERT_TRUE (signatureFromSegmentation (r, 0.05, s));
+  EXPECT_EQ (s.points.size (), significant.size ()); // the signature keeps exactly those
+  EXPECT_EQ (significantSegments (r, interior, 0.0).size (), interior.size ());
+  EXPECT_FALSE (checkSignificance (1.0));
+  EXPECT_FALSE (checkSignificance (-0.01));
+  EXPECT_TRUE (checkSignificance (0.0));
+}
+
+TEST (Signature, ManyFilesInParallelEqualOneByOne)
+{
+  const std::string samples = std::string (PCL_FLOWSEG_SOURCE_DIR) + "/samples/";
+  const std::vector<std::string> paths = {samples + "snowman3d.pcd", samples + "missing.pcd", samples + "hand2d.pcd",
+                                          samples + "dumbbell3d.pcd"};
+  const FlowParameters params;
+  std::vector<Signature> signatures;
+  std::vector<std::string> errors;
+  std::size_t reports = 0, last_done = 0;
+  signaturesOfShapeFiles (paths, ShapeInputOptions (), params, kDefaultSignificance, 2, signatures, errors,
+                          [&] (std::size_t done, const std::string& path, const std::string&) {
+                            ++reports;
+                            EXPECT_GT (done, last_done);
+                            last_done = done;
+                            EXPECT_NE (std::find (paths.begin (), paths.end (), path), paths.end ());
+                          });
+  ASSERT_EQ (signatures.size (), paths.size ());
+  EXPECT_EQ (reports, paths.size ());
+  EXPECT_NE (errors[1].find ("missing.pcd"), std::string::npos) << errors[1];
+  for (std::size_t i : {0u, 2u, 3u})
+  {
+    EXPECT_TRUE (errors[i].empty ()) << errors[i];
+    Signature one;
+    ASSERT_TRUE (signatureOfShapeFile (paths[i], ShapeInputOptions (), params, kDefaultSignificance, one));
+    ASSERT_EQ (one.points.size (), signatures[i].points.size ()) << paths[i];
+    for (std::size_t k = 0; k < one.points.size (); ++k)
+    {
+      EXPECT_EQ (one.points[k].position, signatures[i].points[k].position);
+      EXPECT_EQ (one.points[k].weight, signatures[i].points[k].weight);
+    }
+  }
 }

@@ -4,7 +4,9 @@
  */
 #include "test_support.h"
 
-#include <pcl_flowseg/evaluation/retrieval.h>
+#include <pcl_flowseg/evaluation/png_writer.h>
+#include <pcl_flowseg/evaluation/retrieval_figures.h>
+#include <pcl_flowseg/evaluation/shape_distributions.h>
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/io/silhouette.h>
 

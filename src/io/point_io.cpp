@@ -379,4 +379,31 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, 
   return Status::success ();
 }
 
+Status
+loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointNormal>& cloud, bool& has_normals)
+{
+  cloud.clear ();
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  std::vector<Eigen::Vector3d> normals;
+  const Status loaded = loadPointCloud (path, xyz, normals);
+  has_normals = !normals.empty ();
+  if (!loaded)
+    return loaded;
+  cloud.resize (xyz.size ());
+  for (std::size_t i = 0; i < xyz.size (); ++i)
+  {
+    pcl::PointNormal& p = cloud[i];
+    p.x = xyz[i].x;
+    p.y = xyz[i].y;
+    p.z = xyz[i].z;
+    const Eigen::Vector3d n = has_normals ? normals[i] : Eigen::Vector3d::Zero ();
+    p.normal_x = static_cast<float> (n.x ());
+    p.normal_y = static_cast<float> (n.y ());
+    p.normal_z = static_cast<float> (n.z ());
+  }
+  cloud.sensor_origin_ = xyz.sensor_origin_;
+  cloud.sensor_orientation_ = xyz.sensor_orientation_;
+  return Status::success ();
+}
+
 } // namespace pcl_flowseg

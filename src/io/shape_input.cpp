@@ -18,6 +18,15 @@
 
 namespace pcl_flowseg {
 
+Status
+checkShapeInputOptions (const ShapeInputOptions& options)
+{
+  if (options.mesh_points < 4 || options.mesh_points > 100000000)
+    return Status::error ("the points sampled on a mesh must number from 4 to 100000000, got " +
+                          std::to_string (options.mesh_points));
+  return Status::success ();
+}
+
 bool
 isShapeFile (const std::string& path)
 {

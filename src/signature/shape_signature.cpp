@@ -4,6 +4,7 @@
  */
 #include <pcl_flowseg/signature/shape_signature.h>
 
+#include <pcl_flowseg/common/parallel_jobs.h>
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 
@@ -23,6 +24,27 @@ signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, c
   if (!s.ok && s.message.find (path) == std::string::npos)
     s.message = path + ": " + s.message;
   return s;
+}
+
+void
+signaturesOfShapeFiles (const std::vector<std::string>& paths, const ShapeInputOptions& input, const FlowParameters& params,
+                        double significance, unsigned threads, std::vector<Signature>& signatures,
+                        std::vector<std::string>& errors,
+                        const std::function<void (std::size_t, const std::string&, const std::string&)>& progress)
+{
+  signatures.assign (paths.size (), Signature ());
+  errors.assign (paths.size (), std::string ());
+  runParallelJobs (
+      paths.size (), threads,
+      [&] (std::size_t i) {
+        const Status s = signatureOfShapeFile (paths[i], input, params, significance, signatures[i]);
+        if (!s)
+          errors[i] = s.message;
+      },
+      [&] (std::size_t done, std::size_t i) {
+        if (progress)
+          progress (done, paths[i], errors[i]);
+      });
 }
 
 } // namespace pcl_flowseg

@@ -12,6 +12,21 @@
 #include <cmath>
 #include <limits>
 
+namespace pcl_flowseg {
+
+Status
+checkMatchParameters (const MatchParameters& params)
+{
+  if (!std::isfinite (params.threshold) || params.threshold <= 0.0)
+    return Status::error ("the matcher threshold must be a finite number > 0, got " + std::to_string (params.threshold));
+  if (params.alignment_points < 1 || params.alignment_points > 100)
+    return Status::error ("the alignment points must be a whole number from 1 to 100, got " +
+                          std::to_string (params.alignment_points));
+  return Status::success ();
+}
+
+} // namespace pcl_flowseg
+
 namespace pcl {
 
 namespace {
@@ -198,11 +213,11 @@ SignatureMatcher::alignOnto (const Signature& a, const Signature& b) const
 {
   Result best;
   best.score = -std::numeric_limits<double>::infinity ();
-  AlignmentScorer scorer (a, b, threshold_, best);
-  const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (std::max (1, alignment_points_)));
-  const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (std::max (1, alignment_points_)));
+  AlignmentScorer scorer (a, b, params_.threshold, best);
+  const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (std::max (1, params_.alignment_points)));
+  const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (std::max (1, params_.alignment_points)));
   const Eigen::Vector3d a0 = a.points[0].position;
-  for (int mirror = 0; mirror < (allow_mirror_ ? 2 : 1); ++mirror)
+  for (int mirror = 0; mirror < (params_.allow_mirror ? 2 : 1); ++mirror)
   {
     const Eigen::Matrix3d m = mirror ? Eigen::Vector3d (-1, 1, 1).asDiagonal ().toDenseMatrix () : Eigen::Matrix3d::Identity ();
     const Eigen::Vector3d b0 = m * b.points[0].position;

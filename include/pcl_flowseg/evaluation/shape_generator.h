@@ -43,6 +43,10 @@ struct BlobShape
 std::vector<Eigen::Vector3d>
 sampleBoundary (const BlobShape& shape, std::size_t count, std::uint32_t seed);
 
+/** \brief Points of the shipped samples (the .pcd files in samples/, made by flowseg_make_samples), per shape. */
+constexpr std::size_t kSamplePoints2D = 1500;
+constexpr std::size_t kSamplePoints3D = 4000;
+
 /** \brief The shipped sample shapes. 2D: "dumbbell2d" (two discs and a neck), "star2d" (five
   * arms around a disc), "hand2d" (palm, four fingers, thumb). 3D: "dumbbell3d" (two spheres and
   * a neck), "snowman3d" (three spheres), "animal3d" (body, head, neck, four legs, tail). */

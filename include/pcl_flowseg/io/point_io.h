@@ -31,6 +31,12 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud);
 Status
 loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals);
 
+/** \brief As above, into a cloud that carries the normals (zero when the file has none, then
+  * \a has_normals is false) and the file's VIEWPOINT as sensor_origin_: what
+  * pcl::FlowSegmentation<pcl::PointNormal> takes with setUseNormals and setUseSensorOrigin. */
+Status
+loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointNormal>& cloud, bool& has_normals);
+
 /** \brief True when loadPointCloud knows the extension of \a path. */
 bool
 isSupportedPointFile (const std::string& path);

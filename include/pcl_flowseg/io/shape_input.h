@@ -17,9 +17,13 @@ namespace pcl_flowseg {
 /** \brief How shape files become point samples. */
 struct ShapeInputOptions
 {
-  std::size_t mesh_points = 5000; ///< points sampled on a mesh's faces (area-uniform)
+  std::size_t mesh_points = 5000; ///< points sampled on a mesh's faces (area-uniform; 4 to 10^8)
   std::uint32_t seed = 1;          ///< sampling seed
 };
+
+/** \brief Why \a options cannot be used, or success. */
+Status
+checkShapeInputOptions (const ShapeInputOptions& options);
 
 /** \brief True for the files loadShapeSample reads (.pcd .ply .xyz .txt .csv .off .obj, and the
   * silhouette images .png .bmp .pgm). */

@@ -9,7 +9,9 @@
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/signature/signature.h>
 
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace pcl_flowseg {
 
@@ -18,5 +20,15 @@ namespace pcl_flowseg {
 Status
 signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
                       double significance, Signature& signature);
+
+/** \brief The signatures of many shape files, on \a threads threads (0 = all cores), in the order
+  * of \a paths. A file that fails gets an empty signature and its message in \a errors (empty for
+  * the others); \a progress (optional) is told after each file how many are done and which file
+  * (with its error, if any) was the last. */
+void
+signaturesOfShapeFiles (const std::vector<std::string>& paths, const ShapeInputOptions& input, const FlowParameters& params,
+                        double significance, unsigned threads, std::vector<Signature>& signatures,
+                        std::vector<std::string>& errors,
+                        const std::function<void (std::size_t done, const std::string& path, const std::string& error)>& progress = {});
 
 } // namespace pcl_flowseg

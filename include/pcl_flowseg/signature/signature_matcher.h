@@ -4,13 +4,35 @@
  */
 #pragma once
 
+#include <pcl_flowseg/common/status.h>
 #include <pcl_flowseg/signature/signature.h>
 
+#include <pcl/memory.h>
 #include <pcl/pcl_macros.h>
-#include <pcl/make_shared.h>
 
 #include <utility>
 #include <vector>
+
+namespace pcl_flowseg {
+
+/** \brief How two signatures are aligned and scored. */
+struct MatchParameters
+{
+  /** Largest distance between partner points, in the signatures' normalised length unit
+    * (interior volume^(1/d); finite, > 0). */
+  double threshold = 0.4;
+  /** Also try mirrored alignments: mirror images match. */
+  bool allow_mirror = true;
+  /** How many of the heaviest points of each signature generate alignments (1..100; all points are
+    * scored). The search costs O(m^2 n^2) alignments in 3D. */
+  int alignment_points = 4;
+};
+
+/** \brief Why \a params cannot be used (a message naming the parameter), or success. */
+Status
+checkMatchParameters (const MatchParameters& params);
+
+} // namespace pcl_flowseg
 
 namespace pcl {
 
@@ -52,21 +74,19 @@ public:
 
   SignatureMatcher () = default;
 
-  /** \brief Largest distance between partner points, in the signatures' normalised length unit
-    * (interior volume^(1/d)). Default 0.4, chosen on the TOSCA set (0.2: first tier 0.48, 0.3:
-    * 0.53, 0.4: 0.55, 0.5: 0.54). */
-  inline void setThreshold (double threshold) { threshold_ = threshold; }
-  inline double getThreshold () const { return threshold_; }
+  /** \brief All parameters at once (pcl_flowseg::MatchParameters; its defaults are the class's). */
+  inline void setParameters (const pcl_flowseg::MatchParameters& params) { params_ = params; }
+  inline const pcl_flowseg::MatchParameters& getParameters () const { return params_; }
 
-  /** \brief Also try mirrored alignments (default true: mirror images match). */
-  inline void setAllowMirror (bool allow) { allow_mirror_ = allow; }
-  inline bool getAllowMirror () const { return allow_mirror_; }
-
-  /** \brief How many of the heaviest points of each signature generate alignments (all points are
-    * scored). Default 4: on the TOSCA set 6 points took 1.4 ms per comparison for a first tier of
-    * 0.554, 4 points 0.24 ms for 0.533; the search costs O(m^2 n^2) alignments in 3D. */
-  inline void setAlignmentPoints (int count) { alignment_points_ = count; }
-  inline int getAlignmentPoints () const { return alignment_points_; }
+  /** \brief pcl_flowseg::MatchParameters::threshold. */
+  inline void setThreshold (double threshold) { params_.threshold = threshold; }
+  inline double getThreshold () const { return params_.threshold; }
+  /** \brief pcl_flowseg::MatchParameters::allow_mirror. */
+  inline void setAllowMirror (bool allow) { params_.allow_mirror = allow; }
+  inline bool getAllowMirror () const { return params_.allow_mirror; }
+  /** \brief pcl_flowseg::MatchParameters::alignment_points. */
+  inline void setAlignmentPoints (int count) { params_.alignment_points = count; }
+  inline int getAlignmentPoints () const { return params_.alignment_points; }
 
   /** \brief Similarity of \a a and \a b. Empty signatures score 0 against empty ones and minus the
     * other's total weight otherwise. */
@@ -76,9 +96,7 @@ protected:
   /** Best alignment moving \a b onto \a a, scored from b's points. */
   Result alignOnto (const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b) const;
 
-  double threshold_ = 0.4;
-  bool allow_mirror_ = true;
-  int alignment_points_ = 4;
+  pcl_flowseg::MatchParameters params_;
 };
 
 } // namespace pcl

@@ -1,153 +1,20 @@
 /*
- * pcl_flowseg - retrieval evaluation over a labelled collection, and the D2 shape distribution.
+ * pcl_flowseg evaluation - the paper's figures: similarity matrices (CSV, PNG) and the best matches of queries (PNG).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/evaluation/retrieval.h>
+#include <pcl_flowseg/evaluation/retrieval_figures.h>
 
+#include <pcl_flowseg/evaluation/png_writer.h>
 #include <pcl_flowseg/io/atomic_file.h>
-
-#include <pcl/features/esf.h>
-
-#include <png.h>
-
-#include <cstdio>
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
-#include <cmath>
-#include <fstream>
 #include <iomanip>
-#include <map>
 #include <numeric>
-#include <random>
+#include <ostream>
 
 namespace pcl_flowseg {
-
-RetrievalScores
-scoreRetrieval (const std::vector<std::vector<double>>& similarity, const std::vector<std::string>& labels)
-{
-  RetrievalScores s;
-  const std::size_t n = labels.size ();
-  std::map<std::string, std::size_t> class_size;
-  for (const auto& l : labels)
-    ++class_size[l];
-  std::vector<std::size_t> order;
-  for (std::size_t q = 0; q < n; ++q)
-  {
-    const std::size_t c = class_size[labels[q]];
-    if (c < 2)
-      continue;
-    order.clear ();
-    for (std::size_t j = 0; j < n; ++j)
-      if (j != q)
-        order.push_back (j);
-    std::stable_sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) { return similarity[q][a] > similarity[q][b]; });
-    const std::size_t relevant = c - 1;
-    std::size_t first = 0, second = 0, eye = 1; // the bull's eye counts the query itself
-    double dcg = 0.0, ideal = 0.0;
-    for (std::size_t r = 0; r < order.size (); ++r)
-    {
-      const bool hit = labels[order[r]] == labels[q];
-      const double discount = r == 0 ? 1.0 : 1.0 / std::log2 (static_cast<double> (r + 1));
-      if (hit)
-        dcg += discount;
-      if (r < relevant)
-        ideal += discount;
-      first += hit && r < relevant;
-      second += hit && r < 2 * relevant;
-      eye += hit && r + 1 < 2 * c;
-    }
-    s.nearest_neighbour += labels[order[0]] == labels[q];
-    s.first_tier += static_cast<double> (first) / relevant;
-    s.second_tier += static_cast<double> (second) / relevant;
-    s.dcg += dcg / ideal;
-    s.bulls_eye += static_cast<double> (eye) / c;
-    ++s.queries;
-  }
-  if (s.queries)
-  {
-    const double q = static_cast<double> (s.queries);
-    s.nearest_neighbour /= q;
-    s.first_tier /= q;
-    s.second_tier /= q;
-    s.dcg /= q;
-    s.bulls_eye /= q;
-  }
-  return s;
-}
-
-std::vector<double>
-d2Distribution (const std::vector<Eigen::Vector3d>& points, std::size_t pairs, int bins, std::uint32_t seed)
-{
-  std::vector<double> h (static_cast<std::size_t> (std::max (1, bins)), 0.0);
-  if (points.size () < 2 || pairs == 0)
-    return h;
-  std::mt19937 rng (seed);
-  std::uniform_int_distribution<std::size_t> pick (0, points.size () - 1);
-  std::vector<double> d (pairs);
-  double mean = 0.0;
-  for (auto& v : d)
-  {
-    v = (points[pick (rng)] - points[pick (rng)]).norm ();
-    mean += v;
-  }
-  mean /= static_cast<double> (pairs);
-  if (!(mean > 0.0))
-    return h;
-  for (double v : d)
-  {
-    const int b = static_cast<int> (v / mean / 3.0 * bins);
-    h[static_cast<std::size_t> (std::min (std::max (b, 0), bins - 1))] += 1.0 / static_cast<double> (pairs);
-  }
-  return h;
-}
-
-std::vector<double>
-esfDescriptor (const std::vector<Eigen::Vector3d>& points)
-{
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
-  // ESF voxelises the cloud: scale it to a fixed size first (its histograms are scale invariant
-  // in intent, its voxel grid is not).
-  Eigen::Vector3d lo = points.empty () ? Eigen::Vector3d::Zero () : points.front (), hi = lo;
-  for (const auto& p : points)
-  {
-    lo = lo.cwiseMin (p);
-    hi = hi.cwiseMax (p);
-  }
-  const double diag = (hi - lo).norm ();
-  for (const auto& p : points)
-  {
-    const Eigen::Vector3d q = diag > 0 ? Eigen::Vector3d ((p - lo) / diag) : Eigen::Vector3d::Zero ();
-    cloud->push_back (pcl::PointXYZ (static_cast<float> (q.x ()), static_cast<float> (q.y ()), static_cast<float> (q.z ())));
-  }
-  pcl::ESFEstimation<pcl::PointXYZ, pcl::ESFSignature640> esf;
-  esf.setInputCloud (cloud);
-  pcl::PointCloud<pcl::ESFSignature640> out;
-  esf.compute (out);
-  std::vector<double> h;
-  if (out.size () != 1)
-    return h;
-  double sum = 0.0;
-  for (float v : out[0].histogram)
-  {
-    h.push_back (v);
-    sum += v;
-  }
-  if (sum > 0)
-    for (auto& v : h)
-      v /= sum;
-  return h;
-}
-
-double
-histogramSimilarity (const std::vector<double>& a, const std::vector<double>& b)
-{
-  double l1 = 0.0;
-  for (std::size_t k = 0; k < std::min (a.size (), b.size ()); ++k)
-    l1 += std::abs (a[k] - b[k]);
-  return 1.0 - 0.5 * l1;
-}
 
 Status
 writeSimilarityCsv (const std::string& path, const std::vector<std::string>& names, const std::vector<std::vector<double>>& similarity)
@@ -158,10 +25,7 @@ writeSimilarityCsv (const std::string& path, const std::vector<std::string>& nam
       q += c == '"' ? std::string ("\"\"") : std::string (1, c);
     return q + "\"";
   };
-  return writeFileAtomically (path, [&] (const std::string& tmp) {
-    std::ofstream out (tmp);
-    if (!out)
-      return Status::error ("cannot create file");
+  return writeTextFileAtomically (path, [&] (std::ostream& out) {
     out << "shape";
     for (const auto& n : names)
       out << "," << quote (n);
@@ -173,40 +37,6 @@ writeSimilarityCsv (const std::string& path, const std::vector<std::string>& nam
         out << "," << similarity[i][j];
       out << "\n";
     }
-    out.flush ();
-    return out.good () ? Status::success () : Status::error ("write failed");
-  });
-}
-
-Status
-writePng (const std::string& path, int width, int height, int channels, const std::vector<std::uint8_t>& pixels)
-{
-  if (width <= 0 || height <= 0 || (channels != 1 && channels != 3) ||
-      pixels.size () != static_cast<std::size_t> (width) * static_cast<std::size_t> (height) * static_cast<std::size_t> (channels))
-    return Status::error ("cannot write " + path + ": invalid image size");
-  return writeFileAtomically (path, [&] (const std::string& tmp) {
-    FILE* file = std::fopen (tmp.c_str (), "wb");
-    if (!file)
-      return Status::error ("cannot create file");
-    png_structp png = png_create_write_struct (PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png ? png_create_info_struct (png) : nullptr;
-    if (!png || !info || setjmp (png_jmpbuf (png)))
-    {
-      png_destroy_write_struct (&png, &info);
-      std::fclose (file);
-      return Status::error ("libpng failed");
-    }
-    png_init_io (png, file);
-    png_set_IHDR (png, info, static_cast<png_uint_32> (width), static_cast<png_uint_32> (height), 8,
-                  channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                  PNG_FILTER_TYPE_DEFAULT);
-    png_write_info (png, info);
-    const std::size_t stride = static_cast<std::size_t> (width) * static_cast<std::size_t> (channels);
-    for (int y = 0; y < height; ++y)
-      png_write_row (png, const_cast<png_bytep> (pixels.data () + static_cast<std::size_t> (y) * stride));
-    png_write_end (png, nullptr);
-    png_destroy_write_struct (&png, &info);
-    return std::fclose (file) == 0 ? Status::success () : Status::error ("write failed");
   });
 }
 

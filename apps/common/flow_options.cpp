@@ -1,0 +1,91 @@
+/*
+ * pcl_flowseg apps - the option groups several apps share, bound to the library's parameter types.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "common/flow_options.h"
+
+namespace flowseg_app {
+
+namespace {
+/** A check of one merge value by the library's own rule (the other values at their defaults). */
+std::function<pcl_flowseg::Status (double)>
+mergeCheck (double pcl_flowseg::MergeParameters::*field)
+{
+  return [field] (double v) {
+    pcl_flowseg::MergeParameters m;
+    m.*field = v;
+    return pcl_flowseg::checkMergeParameters (m);
+  };
+}
+} // namespace
+
+void
+addMergeOptions (OptionParser& p, pcl_flowseg::MergeParameters& merge)
+{
+  using M = pcl_flowseg::MergeParameters;
+  p.number ("-r, --rho", "R", "merge threshold rho > 0; < 1 merges nothing", merge.rho, mergeCheck (&M::rho));
+  p.number ("--tolerance", "T", "merge tolerance in local sample spacings, >= 0", merge.sampling_tolerance,
+            mergeCheck (&M::sampling_tolerance));
+  p.number ("--stump-ratio", "R", "thin parts take back their stumps from parts R times thicker;\n0 = off, else >= 1",
+            merge.stump_ratio, mergeCheck (&M::stump_ratio));
+  p.number ("--compact-rho", "R", "merge threshold for compact segments, > 0; acts only above rho", merge.compact_rho,
+            mergeCheck (&M::compact_rho));
+  p.number ("--compact-size", "S", "largest compact segment, in balls of its saddle's radius, >= 0;\n0 = off",
+            merge.compact_size, mergeCheck (&M::compact_size));
+  pcl_flowseg::MergeParameters* m = &merge;
+  p.action ("--paper-rule", "the paper's merging rule alone: tolerance, stump ratio and compact\nsize 0",
+            [m] () { m->sampling_tolerance = m->stump_ratio = m->compact_size = 0.0; });
+}
+
+void
+addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
+{
+  using pcl_flowseg::DimensionMode;
+  addMergeOptions (p, params.merge);
+  p.choice ("-d, --dimension", "D", "auto | 2 | 3; auto: 2D when all points lie on one plane", params.preparation.dimension,
+            std::vector<std::pair<std::string, DimensionMode>>{
+                {"auto", DimensionMode::Automatic}, {"2", DimensionMode::Planar}, {"3", DimensionMode::Spatial}});
+  p.choice ("-f, --features", "SIDE", "interior | exterior | both: which segments are reported", params.features,
+            std::vector<std::pair<std::string, pcl_flowseg::FeatureSide>>{{"interior", pcl_flowseg::FeatureSide::Interior},
+                                                                           {"exterior", pcl_flowseg::FeatureSide::Exterior},
+                                                                           {"both", pcl_flowseg::FeatureSide::Both}});
+  pcl_flowseg::InteriorParameters* in = &params.interior;
+  p.action ("--no-interior", "skip interior/exterior separation: the paper's raw segmentation of\nthe whole convex hull, every segment reported",
+            [in] () { in->separate = false; });
+  p.choice ("--denoise", "MODE", "auto | off | on: smooth noisy samples before separating interior\nand exterior",
+            params.interior.denoising,
+            std::vector<std::pair<std::string, pcl_flowseg::Denoising>>{{"auto", pcl_flowseg::Denoising::Automatic},
+                                                                         {"off", pcl_flowseg::Denoising::Off},
+                                                                         {"on", pcl_flowseg::Denoising::Always}});
+}
+
+void
+addThreadsOption (OptionParser& p, unsigned& threads)
+{
+  p.count ("-j, --threads", "N", "worker threads: 0 = all cores, 1 = sequential", threads, 0, 1024);
+  p.alias ("--jobs", "--threads");
+}
+
+void
+addSignatureOptions (OptionParser& p, SignatureOptions& o)
+{
+  p.number ("--significance", "F", "features above this share of the interior volume are significant", o.significance,
+            [] (double v) { return pcl_flowseg::checkSignificance (v); });
+  p.count ("--mesh-points", "N", "points sampled on a mesh's faces", o.input.mesh_points, 4, 100000000);
+}
+
+void
+addMatchOptions (OptionParser& p, pcl_flowseg::MatchParameters& match)
+{
+  p.number ("--threshold", "T", "largest distance between matched features, in the signatures'\nnormalised unit",
+            match.threshold, [] (double v) {
+              pcl_flowseg::MatchParameters m;
+              m.threshold = v;
+              return pcl_flowseg::checkMatchParameters (m);
+            });
+  p.count ("--alignment-points", "N", "heaviest features that generate alignments", match.alignment_points, 1, 100);
+  bool* mirror = &match.allow_mirror;
+  p.action ("--no-mirror", "do not match mirror images", [mirror] () { *mirror = false; });
+}
+
+} // namespace flowseg_app

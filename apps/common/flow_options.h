@@ -1,0 +1,43 @@
+/*
+ * pcl_flowseg apps - the option groups several apps share, bound to the library's parameter types.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include "common/options.h"
+
+#include <pcl_flowseg/common/feature_significance.h>
+#include <pcl_flowseg/common/flow_parameters.h>
+#include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
+
+namespace flowseg_app {
+
+/** \brief -r/--rho, --tolerance, --stump-ratio, --compact-rho, --compact-size, --paper-rule. */
+void
+addMergeOptions (OptionParser& parser, pcl_flowseg::MergeParameters& merge);
+
+/** \brief The merge options and -d/--dimension, -f/--features, --no-interior, --denoise. */
+void
+addSegmentationOptions (OptionParser& parser, pcl_flowseg::FlowParameters& params);
+
+/** \brief -j/--threads N (also --jobs N), described the same way in every app. */
+void
+addThreadsOption (OptionParser& parser, unsigned& threads);
+
+/** \brief How shape files become signatures. */
+struct SignatureOptions
+{
+  double significance = pcl_flowseg::kDefaultSignificance;
+  pcl_flowseg::ShapeInputOptions input;
+};
+
+/** \brief --significance F and --mesh-points N. */
+void
+addSignatureOptions (OptionParser& parser, SignatureOptions& options);
+
+/** \brief --threshold T, --alignment-points N, --no-mirror. */
+void
+addMatchOptions (OptionParser& parser, pcl_flowseg::MatchParameters& match);
+
+} // namespace flowseg_app
