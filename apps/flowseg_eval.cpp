@@ -114,7 +114,7 @@ describeShape (const std::string& root, const Options& o, std::size_t i, Collect
   if (s && o.esf)
   {
     const auto t0 = Clock::now ();
-    c.esf[i] = pcl_flowseg::esfDescriptor (pts);
+    s = pcl_flowseg::esfDescriptor (pts, c.esf[i]);
     ms[2] = msSince (t0);
   }
   if (!s)

@@ -179,6 +179,14 @@ struct Score
   double faces = kMissing;
 };
 
+/** The Rand-index error, or NaN (a missing cell of the table) when it cannot be computed. */
+double
+errorOf (const std::vector<double>& weights, const std::vector<int>& a, const std::vector<int>& b)
+{
+  double e = 0.0;
+  return pcl_flowseg::randIndexError (weights, a, b, e) ? e : kMissing;
+}
+
 Score
 meanError (const std::vector<double>& areas, const std::vector<int>& labels, const std::vector<std::vector<int>>& references)
 {
@@ -186,8 +194,8 @@ meanError (const std::vector<double>& areas, const std::vector<int>& labels, con
   Score s{0.0, 0.0};
   for (const auto& ref : references)
   {
-    s.area += pcl_flowseg::randIndexError (areas, labels, ref) / references.size ();
-    s.faces += pcl_flowseg::randIndexError (ones, labels, ref) / references.size ();
+    s.area += errorOf (areas, labels, ref) / references.size ();
+    s.faces += errorOf (ones, labels, ref) / references.size ();
   }
   return s;
 }
@@ -336,8 +344,9 @@ evaluateModel (const Model& model, const Options& o)
     if (m.error.empty ())
     {
       const auto start = std::chrono::steady_clock::now ();
-      const auto labels = pcl_flowseg::transferPointLabelsToFaces (mesh, points, result.point_labels,
-                                                                   insignificantFeatures (result, o.significance));
+      std::vector<int> labels;
+      pcl_flowseg::transferPointLabelsToFaces (mesh, points, result.point_labels, labels,
+                                               insignificantFeatures (result, o.significance)); // sizes match
       r.transfer_seconds += secondsSince (start);
       m.score = meanError (areas, labels, humans);
       m.segments = static_cast<double> (distinctLabels (labels));
@@ -389,7 +398,7 @@ evaluateGenerated (const pcl_flowseg::BlobShape& shape, const Options& o)
   for (const auto& p : points)
     truth.push_back (shape.nearestPart (p));
   const std::vector<double> ones (points.size (), 1.0);
-  const double one = pcl_flowseg::randIndexError (ones, std::vector<int> (points.size (), 0), truth);
+  const double one = errorOf (ones, std::vector<int> (points.size (), 0), truth);
   g.one_segment = Score{one, one};
   for (double rho : o.rhos)
   {
@@ -400,7 +409,7 @@ evaluateGenerated (const pcl_flowseg::BlobShape& shape, const Options& o)
       std::vector<int> labels;
       for (std::uint32_t l : result.point_labels)
         labels.push_back (l == pcl_flowseg::kNoSegment ? -1 : static_cast<int> (l));
-      const double e = pcl_flowseg::randIndexError (ones, labels, truth);
+      const double e = errorOf (ones, labels, truth);
       m.score = Score{e, e};
       m.segments = static_cast<double> (distinctLabels (labels));
     }

@@ -128,8 +128,13 @@ TEST (Retrieval, D2IsInvariantAndDiscriminates)
   const auto ha = d2Distribution (a), hm = d2Distribution (moved), ho = d2Distribution (other);
   EXPECT_GT (histogramSimilarity (ha, hm), 0.97);
   EXPECT_LT (histogramSimilarity (ha, ho), histogramSimilarity (ha, hm));
-  const auto ea = esfDescriptor (a);
+  std::vector<double> ea;
+  ASSERT_TRUE (esfDescriptor (a, ea));
   EXPECT_EQ (ea.size (), 640u);
+  double sum = 0.0;
+  for (double v : ea)
+    sum += v;
+  EXPECT_NEAR (sum, 1.0, 1e-9);
 }
 
 TEST (Png, WellFormed)

@@ -16,6 +16,25 @@ using namespace pcl_flowseg;
 
 namespace {
 
+/** The Rand-index error of a call that must succeed. */
+double
+errorOf (const std::vector<double>& w, const std::vector<int>& a, const std::vector<int>& b)
+{
+  double e = -1.0;
+  EXPECT_TRUE (randIndexError (w, a, b, e));
+  return e;
+}
+
+/** The face labels of a transfer that must succeed. */
+std::vector<int>
+facesOf (const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& points, const std::vector<std::uint32_t>& labels,
+         const std::vector<std::uint32_t>& unlabelled = {})
+{
+  std::vector<int> faces;
+  EXPECT_TRUE (transferPointLabelsToFaces (mesh, points, labels, faces, unlabelled));
+  return faces;
+}
+
 /** Error by counting every pair i < j: the definition, for checking the contingency table. */
 double
 randIndexErrorOverAllPairs (const std::vector<double>& w, const std::vector<int>& a, const std::vector<int>& b)
@@ -83,7 +102,7 @@ TEST (SegmentationEvaluation, IdenticalLabellingsHaveNoError)
   std::uniform_real_distribution<double> area (0.1, 2.0);
   for (auto& w : weights)
     w = area (rng);
-  EXPECT_EQ (randIndexError (weights, labels, labels), 0.0);
+  EXPECT_EQ (errorOf (weights, labels, labels), 0.0);
 }
 
 TEST (SegmentationEvaluation, RenamedSegmentIdsHaveNoError)
@@ -94,7 +113,7 @@ TEST (SegmentationEvaluation, RenamedSegmentIdsHaveNoError)
   std::vector<int> b;
   for (int l : a)
     b.push_back (renamed[l]);
-  EXPECT_NEAR (randIndexError (std::vector<double> (a.size (), 1.0), a, b), 0.0, 1e-12);
+  EXPECT_NEAR (errorOf (std::vector<double> (a.size (), 1.0), a, b), 0.0, 1e-12);
 }
 
 TEST (SegmentationEvaluation, FourFacesWithUnequalWeightsByHand)
@@ -105,10 +124,10 @@ TEST (SegmentationEvaluation, FourFacesWithUnequalWeightsByHand)
   // disagreeing weight 2 + 6 + 8 = 16 of 2 + 3 + 4 + 6 + 8 + 12 = 35.
   const std::vector<double> w = {1, 2, 3, 4};
   const std::vector<int> a = {0, 0, 1, 1}, b = {0, 1, 1, 1};
-  EXPECT_NEAR (randIndexError (w, a, b), 16.0 / 35.0, 1e-12);
-  EXPECT_NEAR (randIndexError (w, b, a), 16.0 / 35.0, 1e-12);
+  EXPECT_NEAR (errorOf (w, a, b), 16.0 / 35.0, 1e-12);
+  EXPECT_NEAR (errorOf (w, b, a), 16.0 / 35.0, 1e-12);
   // Unit weights: pairs {0,1}, {1,2}, {1,3} of 6 disagree.
-  EXPECT_NEAR (randIndexError (std::vector<double> (4, 1.0), a, b), 3.0 / 6.0, 1e-12);
+  EXPECT_NEAR (errorOf (std::vector<double> (4, 1.0), a, b), 3.0 / 6.0, 1e-12);
 }
 
 TEST (SegmentationEvaluation, ContingencyTableAgreesWithCountingPairs)
@@ -122,19 +141,22 @@ TEST (SegmentationEvaluation, ContingencyTableAgreesWithCountingPairs)
     std::vector<double> w (n);
     for (auto& x : w)
       x = area (rng);
-    EXPECT_NEAR (randIndexError (w, a, b), randIndexErrorOverAllPairs (w, a, b), 1e-12) << "trial " << trial;
+    EXPECT_NEAR (errorOf (w, a, b), randIndexErrorOverAllPairs (w, a, b), 1e-12) << "trial " << trial;
     const std::vector<double> ones (n, 1.0);
-    EXPECT_NEAR (randIndexError (ones, a, b), randIndexErrorOverAllPairs (ones, a, b), 1e-12) << "trial " << trial;
+    EXPECT_NEAR (errorOf (ones, a, b), randIndexErrorOverAllPairs (ones, a, b), 1e-12) << "trial " << trial;
   }
 }
 
 TEST (SegmentationEvaluation, ExtremeAndInvalidInputs)
 {
   // One segment against every face on its own: every pair disagrees.
-  EXPECT_NEAR (randIndexError ({1, 2, 3}, {5, 5, 5}, {0, 1, 2}), 1.0, 1e-12);
-  EXPECT_EQ (randIndexError ({2.0}, {0}, {1}), 0.0);
-  EXPECT_EQ (randIndexError ({}, {}, {}), 0.0);
-  EXPECT_TRUE (std::isnan (randIndexError ({1, 1}, {0, 1}, {0})));
+  EXPECT_NEAR (errorOf ({1, 2, 3}, {5, 5, 5}, {0, 1, 2}), 1.0, 1e-12);
+  EXPECT_EQ (errorOf ({2.0}, {0}, {1}), 0.0);
+  EXPECT_EQ (errorOf ({}, {}, {}), 0.0);
+  double e = 0.5;
+  const Status mismatch = randIndexError ({1, 1}, {0, 1}, {0}, e);
+  EXPECT_FALSE (mismatch);
+  EXPECT_NE (mismatch.message.find ("2 weights"), std::string::npos) << mismatch.message;
 }
 
 TEST (SegmentationEvaluation, ReadsSegFiles)
@@ -198,19 +220,19 @@ TEST (SegmentationEvaluation, TransfersLabelsOnTwoPartMesh)
       labels.push_back (decoy);
     }
   }
-  const auto faces = transferPointLabelsToFaces (mesh, points, labels, {9u});
+  const auto faces = facesOf (mesh, points, labels, {9u});
   ASSERT_EQ (faces.size (), mesh.faces.size ());
   for (std::size_t f = 0; f < faces.size (); ++f)
     EXPECT_EQ (faces[f], f < 12 ? 0 : 1) << "face " << f;
   // Without declaring 9 unlabelled, those decoys outvote the samples on part 0.
-  const auto with_nine = transferPointLabelsToFaces (mesh, points, labels);
+  const auto with_nine = facesOf (mesh, points, labels);
   for (std::size_t f = 0; f < 12; ++f)
     EXPECT_EQ (with_nine[f], 9) << "face " << f;
   // The transferred labelling scores perfectly against the parts.
   std::vector<int> truth;
   for (std::size_t f = 0; f < faces.size (); ++f)
     truth.push_back (f < 12 ? 4 : 8);
-  EXPECT_EQ (randIndexError (faceAreas (mesh), faces, truth), 0.0);
+  EXPECT_EQ (errorOf (faceAreas (mesh), faces, truth), 0.0);
 }
 
 TEST (SegmentationEvaluation, NoLabelledPointMeansNoFaceLabel)
@@ -219,6 +241,10 @@ TEST (SegmentationEvaluation, NoLabelledPointMeansNoFaceLabel)
   addCube (mesh, 0.0);
   const auto points = sampleMeshSurface (mesh, 50, 0.0, 2);
   const std::vector<std::uint32_t> labels (points.size (), kNoSegment);
-  for (int label : transferPointLabelsToFaces (mesh, points, labels))
+  const auto faces = facesOf (mesh, points, labels);
+  ASSERT_EQ (faces.size (), mesh.faces.size ());
+  for (int label : faces)
     EXPECT_EQ (label, -1);
+  std::vector<int> unused;
+  EXPECT_FALSE (transferPointLabelsToFaces (mesh, points, std::vector<std::uint32_t> (3, 0u), unused)) << "sizes differ";
 }

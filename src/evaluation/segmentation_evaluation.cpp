@@ -107,11 +107,13 @@ faceAreas (const TriangleMesh& mesh)
   return areas;
 }
 
-double
-randIndexError (const std::vector<double>& weights, const std::vector<int>& a, const std::vector<int>& b)
+Status
+randIndexError (const std::vector<double>& weights, const std::vector<int>& a, const std::vector<int>& b, double& error)
 {
+  error = 0.0;
   if (a.size () != weights.size () || b.size () != weights.size ())
-    return std::numeric_limits<double>::quiet_NaN ();
+    return Status::error ("Rand index: " + std::to_string (weights.size ()) + " weights for " + std::to_string (a.size ()) +
+                          " and " + std::to_string (b.size ()) + " labels");
   double total = 0.0, self_pairs = 0.0;
   for (double w : weights)
   {
@@ -120,7 +122,7 @@ randIndexError (const std::vector<double>& weights, const std::vector<int>& a, c
   }
   const double all_pairs = total * total - self_pairs; // twice the weight of the pairs i < j
   if (!(all_pairs > 0.0))
-    return 0.0;
+    return Status::success ();
   const double in_a = sumOfSquaredSegmentWeights<int> (weights, [&] (std::size_t i) { return a[i]; });
   const double in_b = sumOfSquaredSegmentWeights<int> (weights, [&] (std::size_t i) { return b[i]; });
   const double in_both = sumOfSquaredSegmentWeights<std::uint64_t> (weights, [&] (std::size_t i) {
@@ -128,19 +130,20 @@ randIndexError (const std::vector<double>& weights, const std::vector<int>& a, c
   });
   // The self pairs (w_i^2) are in each of the three sums and cancel: in_a + in_b - 2 in_both is
   // twice the weight of the pairs of distinct elements on which a and b disagree.
-  const double error = (in_a + in_b - 2.0 * in_both) / all_pairs;
-  return std::min (1.0, std::max (0.0, error));
+  error = std::min (1.0, std::max (0.0, (in_a + in_b - 2.0 * in_both) / all_pairs));
+  return Status::success ();
 }
 
-std::vector<int>
+Status
 transferPointLabelsToFaces (const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                            const std::vector<std::uint32_t>& point_labels,
+                            const std::vector<std::uint32_t>& point_labels, std::vector<int>& face_labels,
                             const std::vector<std::uint32_t>& unlabelled)
 {
   constexpr int kNeighbours = 4;
-  std::vector<int> face_labels (mesh.faces.size (), -1);
+  face_labels.assign (mesh.faces.size (), -1);
   if (points.size () != point_labels.size ())
-    return face_labels;
+    return Status::error ("label transfer: " + std::to_string (point_labels.size ()) + " labels for " +
+                          std::to_string (points.size ()) + " points");
 
   std::vector<float> coordinates;
   std::vector<int> voter_labels;
@@ -155,7 +158,7 @@ transferPointLabelsToFaces (const TriangleMesh& mesh, const std::vector<Eigen::V
     voter_labels.push_back (static_cast<int> (label));
   }
   if (voter_labels.empty () || mesh.faces.empty ())
-    return face_labels;
+    return Status::success ();
 
   flann::Index<flann::L2_Simple<float>> index (flann::Matrix<float> (coordinates.data (), voter_labels.size (), 3),
                                                flann::KDTreeSingleIndexParams (10));
@@ -204,7 +207,7 @@ transferPointLabelsToFaces (const TriangleMesh& mesh, const std::vector<Eigen::V
         face_labels[f] = entry.first;
       }
   }
-  return face_labels;
+  return Status::success ();
 }
 
 } // namespace pcl_flowseg

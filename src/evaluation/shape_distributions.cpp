@@ -38,9 +38,10 @@ d2Distribution (const std::vector<Eigen::Vector3d>& points, std::size_t pairs, i
   return h;
 }
 
-std::vector<double>
-esfDescriptor (const std::vector<Eigen::Vector3d>& points)
+Status
+esfDescriptor (const std::vector<Eigen::Vector3d>& points, std::vector<double>& h)
 {
+  h.clear ();
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
   // ESF voxelises the cloud: scale it to a fixed size first (its histograms are scale invariant
   // in intent, its voxel grid is not).
@@ -60,9 +61,8 @@ esfDescriptor (const std::vector<Eigen::Vector3d>& points)
   esf.setInputCloud (cloud);
   pcl::PointCloud<pcl::ESFSignature640> out;
   esf.compute (out);
-  std::vector<double> h;
   if (out.size () != 1)
-    return h;
+    return Status::error ("PCL's ESF estimation gave no descriptor for " + std::to_string (points.size ()) + " points");
   double sum = 0.0;
   for (float v : out[0].histogram)
   {
@@ -72,7 +72,7 @@ esfDescriptor (const std::vector<Eigen::Vector3d>& points)
   if (sum > 0)
     for (auto& v : h)
       v /= sum;
-  return h;
+  return Status::success ();
 }
 
 double

@@ -51,10 +51,10 @@ faceAreas (const TriangleMesh& mesh);
   *
   * \param[in] weights non-negative weight of each element (face areas, or all 1)
   * \param[in] a, b labels of each element (any integers; only equality matters)
-  * \return the error in [0, 1]; 0 when fewer than two elements (or all weight on one element);
-  *         NaN when the three vectors differ in length. */
-double
-randIndexError (const std::vector<double>& weights, const std::vector<int>& a, const std::vector<int>& b);
+  * \param[out] error in [0, 1]; 0 when fewer than two elements (or all weight on one element)
+  * \return success, or why not: the three vectors differ in length. */
+Status
+randIndexError (const std::vector<double>& weights, const std::vector<int>& a, const std::vector<int>& b, double& error);
 
 /** \brief Label of each face of \a mesh taken from labelled sample points near it.
   *
@@ -68,12 +68,12 @@ randIndexError (const std::vector<double>& weights, const std::vector<int>& a, c
   * \param[in] mesh the faces to label
   * \param[in] points sample points (any number, e.g. sampled on the mesh)
   * \param[in] point_labels one label per point (e.g. FlowResult::point_labels)
+  * \param[out] face_labels one label per face; -1 for every face when no point is labelled
   * \param[in] unlabelled further labels that mean "no label"
-  * \return one label per face; -1 for every face when no point is labelled (or when \a points and
-  *         \a point_labels differ in length). */
-std::vector<int>
+  * \return success, or why not: \a points and \a point_labels differ in length. */
+Status
 transferPointLabelsToFaces (const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                            const std::vector<std::uint32_t>& point_labels,
+                            const std::vector<std::uint32_t>& point_labels, std::vector<int>& face_labels,
                             const std::vector<std::uint32_t>& unlabelled = {});
 
 } // namespace pcl_flowseg

@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <pcl_flowseg/common/status.h>
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -17,10 +19,10 @@ namespace pcl_flowseg {
 std::vector<double>
 d2Distribution (const std::vector<Eigen::Vector3d>& points, std::size_t pairs = 100000, int bins = 64, std::uint32_t seed = 1);
 
-/** \brief PCL's Ensemble of Shape Functions descriptor (pcl::ESFEstimation, 640 bins; contains a
-  * D2 part) of a point sample; empty when PCL cannot compute it. */
-std::vector<double>
-esfDescriptor (const std::vector<Eigen::Vector3d>& points);
+/** \brief PCL's Ensemble of Shape Functions descriptor (pcl::ESFEstimation, 640 bins, normalised
+  * to sum 1; contains a D2 part) of a point sample; fails when PCL cannot compute it. */
+Status
+esfDescriptor (const std::vector<Eigen::Vector3d>& points, std::vector<double>& histogram);
 
 /** \brief Similarity of two histograms: 1 - L1 distance / 2 (1 for equal distributions). */
 double
