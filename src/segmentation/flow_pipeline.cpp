@@ -224,7 +224,7 @@ runStages (const Run& run)
 std::size_t
 estimateSegmentationMemory (std::size_t points, int dimension)
 {
-  // Measured peaks (docs/measurements.md): about 3 KiB per point in 3D, 1 KiB in 2D.
+  // From the measured peaks (docs/measurements.md).
   return points * (dimension == 2 ? 1024u : 3072u);
 }
 

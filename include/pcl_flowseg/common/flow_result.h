@@ -121,9 +121,9 @@ struct InteriorReport
   bool manifold = false; ///< closed, and no non-manifold edge or vertex
   std::size_t ray_cells = 0; ///< cells marked outside by sensor rays (viewpoint given)
   /** Median over the samples of the surface variation of their 16 nearest neighbours (smallest
-    * PCA eigenvalue over the sum; in 2D the same for the curve): about 0.001 for clean dense
-    * samples, 0.04 and more for noisy ones. Measured only when the raw labelling left more than
-    * 8% of the samples off its boundary (or denoising is Always); -1 when not measured. */
+    * PCA eigenvalue over the sum; in 2D the same for the curve): small for clean dense samples,
+    * large for noisy ones. Computed only when the raw labelling left many samples off its boundary
+    * (or denoising is Always); -1 otherwise. */
   double surface_variation = -1.0;
   /** Smoothing passes applied before separating interior and exterior (0: the sample as given). */
   int smoothing_passes = 0;

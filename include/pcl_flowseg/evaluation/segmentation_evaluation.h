@@ -32,23 +32,11 @@ std::vector<double>
 faceAreas (const TriangleMesh& mesh);
 
 /** \brief Weighted Rand-index error (1 - Rand index) between two labellings \a a and \a b of the
-  * same elements: the weighted share of element pairs that one labelling puts in one segment and
-  * the other in two. 0 for identical partitions (whatever the ids), up to 1.
-  *
-  * Pairs counted: every unordered pair {i, j} of two distinct elements (i < j) once, with the
-  * weight weights[i] * weights[j]; an element is never paired with itself. So
-  * \f[ E = \frac{\sum_{i<j} w_i w_j \, [\,[a_i = a_j] \neq [b_i = b_j]\,]}{\sum_{i<j} w_i w_j}
-  *   = \frac{\sum_s A_s^2 + \sum_t B_t^2 - 2 \sum_{s,t} N_{st}^2}{(\sum_i w_i)^2 - \sum_i w_i^2} \f]
-  * with A_s, B_t the weight of segment s of \a a and t of \a b, and N_st the weight of the elements
-  * in both (a contingency table in a hash map: O(n + table entries) time, no loop over pairs).
-  *
-  * With unit weights this is the "RI" that the Princeton Segmentation Benchmark's own evaluation
-  * code reports (segEval, EvaluateRandIndex; Chen, Golovinskiy, Funkhouser, "A Benchmark for 3D
-  * Mesh Segmentation", SIGGRAPH 2009): it counts faces, not areas, over the C(n, 2) pairs of
-  * distinct faces and reports 1 - RI (its normaliser divides by the integer (n - 1) / 2, a
-  * relative difference of about 1/n for even n). With face areas as weights a pair of faces weighs the product
-  * of their areas, so the result no longer depends on how finely a region is triangulated.
-  *
+  * same elements: the weighted share of the pairs {i, j} of distinct elements (weight w_i w_j) that
+  * one labelling puts in one segment and the other in two; 0 for identical partitions (whatever
+  * the ids), up to 1. Computed from a contingency table (O(n), no loop over pairs). With unit
+  * weights it is the PSB's own "RI" error over faces; with face areas it does not depend on how
+  * finely a region is triangulated (docs/method.md has the formula and the comparison).
   * \param[in] weights non-negative weight of each element (face areas, or all 1)
   * \param[in] a, b labels of each element (any integers; only equality matters)
   * \param[out] error in [0, 1]; 0 when fewer than two elements (or all weight on one element)

@@ -114,8 +114,8 @@ triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCel
 /** True when CGAL's parallel insertion should run: two or more workers allowed, a few thousand
   * points at least, and a core to spare by the system's 1-minute load average. Its threads spin on
   * cell locks; when they must share cores with other busy processes they wait out each other's
-  * time slices (measured on 2 cores with one other busy process: 120k points took 13.5 s instead
-  * of 2.1 s sequentially). The result is the same either way (canonical order). */
+  * time slices, which can cost several times the sequential time (docs/method.md). The result is
+  * the same either way (canonical order). */
 bool
 parallelTriangulationPays (std::size_t points)
 {

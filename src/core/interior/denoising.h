@@ -13,14 +13,11 @@
 namespace pcl_flowseg {
 namespace core {
 
-/** Median surface variation above which a sample may be noisy. Clean samples of the development
-  * meshes measure 0.0001 to 0.009 (5k to 50k points; a CAD part with thin blades, rotor.off at 5k,
-  * 0.064), 0.25% noise 0.011 to 0.12, 0.5% noise 0.04 to 0.16. */
+/** Median surface variation above which a sample may be noisy: between what clean and noisy samples
+  * of the development meshes measure (docs/method.md). */
 constexpr double kNoiseVariation = 0.04;
-/** Share of samples off the boundary of the raw labelling above which it is taken as failed.
-  * Clean samples: 0.002 (5k) to 0.05 (rotor.off at 5k); 0.25% noise at 5k: 0.014 to 0.13; 0.5%
-  * noise: 0.10 to 0.93. Where both this and the variation were exceeded, smoothing measured
-  * better; where only one was, the raw labelling did. */
+/** Share of samples off the boundary of the raw labelling above which it is taken as failed;
+  * smoothing helps where both this and the variation are exceeded (docs/method.md). */
 constexpr double kOffBoundaryShare = 0.08;
 /** Neighbours of the local PCA fits. */
 constexpr int kNoiseNeighbours = 16;

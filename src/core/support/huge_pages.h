@@ -15,8 +15,8 @@ namespace core {
 
 /** \brief Asks the kernel to back the 2 MiB-aligned part of [data, data + bytes) with transparent
   * huge pages (Linux, THP in "madvise" mode). Must come before the memory is first written. The
-  * first write to each 4 KiB page otherwise costs a page fault; on virtual machines that costs up
-  * to ~10 us per page (measured here: 0.8 s for 256 MiB), more than the work done on the memory. */
+  * first write to each 4 KiB page otherwise costs a page fault, which on virtual machines can cost
+  * more than the work done on the memory. */
 inline void
 adviseHugePages (const void* data, std::size_t bytes)
 {
