@@ -1,4 +1,4 @@
-# pcl_flowseg: the two commands of the README.
+# pcl_flowseg: the two commands of the README (demo, test) and the other targets.
 #   make demo   installs dependencies, builds, and segments a shipped sample
 #   make test   installs dependencies, builds, and runs the test suite
 BUILD ?= build

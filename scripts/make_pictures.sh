@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README's pictures in docs/images from the shipped samples and ../shared/data.
+# Regenerates the documentation's pictures in docs/images from the shipped samples and ../shared/data.
 # Needs a build (make build), xvfb-run (Debian package xvfb) for the 3D views, and rsvg-convert
 # (librsvg2-bin) for the 2D SVG. Usage: bash scripts/make_pictures.sh [BUILD_DIR]
 set -euo pipefail

@@ -223,5 +223,14 @@ if [ -x "$build/apps/flowseg_view" ]; then
   fi
 fi
 
+# --- the documentation holds every app's own --help -------------------------------------------
+if [ -x "$build/apps/flowseg_view" ]; then
+  bash "$src/scripts/update_app_docs.sh" "$build" "$work/apps.md"
+  cmp -s "$work/apps.md" "$src/docs/apps.md"
+  check "docs/apps.md holds every app's --help (run: bash scripts/update_app_docs.sh)" $?
+else
+  echo "SKIPPED: docs/apps.md check (flowseg_view is not built)"
+fi
+
 echo "apps: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
