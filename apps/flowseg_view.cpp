@@ -25,6 +25,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -148,10 +149,9 @@ addSurface (Visualizer& viewer, const pcl_flowseg::FlowResult& r)
   viewer.setShapeRenderingProperties (pcl::visualization::PCL_VISUALIZER_COLOR, 0.55, 0.55, 0.55, "surface");
 }
 
-/** Camera: by default along the shape's thinnest principal axis (it shows the most), tilted a
-  * little, with the longest axis up; 2D from above; \a view sets the direction. */
-void
-placeCamera (Visualizer& viewer, const std::vector<Eigen::Vector3d>& pts, int dimension, std::optional<Eigen::Vector3d> view)
+/** The bounding box of the points: lowest and highest corner. */
+std::pair<Eigen::Vector3d, Eigen::Vector3d>
+boundingBox (const std::vector<Eigen::Vector3d>& pts)
 {
   Eigen::Vector3d lo = pts.front (), hi = pts.front ();
   for (const auto& p : pts)
@@ -159,6 +159,15 @@ placeCamera (Visualizer& viewer, const std::vector<Eigen::Vector3d>& pts, int di
     lo = lo.cwiseMin (p);
     hi = hi.cwiseMax (p);
   }
+  return {lo, hi};
+}
+
+/** Camera: by default along the shape's thinnest principal axis (it shows the most), tilted a
+  * little, with the longest axis up; 2D from above; \a view sets the direction. */
+void
+placeCamera (Visualizer& viewer, const std::vector<Eigen::Vector3d>& pts, int dimension, std::optional<Eigen::Vector3d> view)
+{
+  const auto [lo, hi] = boundingBox (pts);
   const Eigen::Vector3d centre = 0.5 * (lo + hi);
   Eigen::Vector3d up = dimension == 2 ? Eigen::Vector3d (0, 1, 0) : Eigen::Vector3d (0, 0, 1);
   if (!view && dimension == 2)
@@ -216,12 +225,7 @@ main (int argc, char** argv)
   viewer.setBackgroundColor (1.0, 1.0, 1.0);
   viewer.addPointCloud<pcl::PointXYZRGB> (colouredPoints (*cloud, r), "points");
   viewer.setPointCloudRenderingProperties (pcl::visualization::PCL_VISUALIZER_POINT_SIZE, o.point_size, "points");
-  Eigen::Vector3d lo = pts.front (), hi = pts.front ();
-  for (const auto& p : pts)
-  {
-    lo = lo.cwiseMin (p);
-    hi = hi.cwiseMax (p);
-  }
+  const auto [lo, hi] = boundingBox (pts);
   const std::size_t spheres = addFeatureSpheres (viewer, r, o.signature.significance, (hi - lo).norm ());
   if (o.surface && r.interior.computed && r.dimension == 3)
     addSurface (viewer, r);

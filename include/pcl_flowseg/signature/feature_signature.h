@@ -44,24 +44,7 @@ public:
 
   /** \brief Computes the signature of the input (honouring setIndices).
     * \return false on bad input; getLastError() says why. */
-  bool
-  compute (pcl_flowseg::Signature& signature)
-  {
-    last_error_.clear ();
-    segmentation_.setInputCloud (input_);
-    segmentation_.setIndices (indices_);
-    segmentation_.setSeparateInterior (true);
-    std::vector<PointIndices> features;
-    if (!segmentation_.segment (features))
-    {
-      last_error_ = segmentation_.getLastError ();
-      return false;
-    }
-    const pcl_flowseg::Status s = pcl_flowseg::signatureFromSegmentation (segmentation_.getResult (), significance_, signature);
-    if (!s.ok)
-      last_error_ = s.message;
-    return s.ok;
-  }
+  bool compute (pcl_flowseg::Signature& signature);
 
   inline const std::string& getLastError () const { return last_error_; }
 
@@ -72,3 +55,7 @@ protected:
 };
 
 } // namespace pcl
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_flowseg/signature/impl/feature_signature.hpp>
+#endif
