@@ -42,7 +42,9 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
         __builtin_trap ();
     pcl_flowseg::Signature s;
     pcl_flowseg::signatureFromSegmentation (r, 0.02, s);
-    pcl_flowseg::remergeFlowSegmentation (2.0, r);
+    pcl_flowseg::MergeParameters merge;
+    merge.rho = 2.0;
+    pcl_flowseg::remergeFlowSegmentation (merge, r);
   }
   return 0;
 }
