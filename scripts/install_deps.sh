@@ -5,7 +5,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake make pkg-config
+  build-essential cmake make pkg-config python3
   libpcl-dev libcgal-dev libflann-dev libeigen3-dev libboost-dev
   libgtest-dev libtbb-dev libpng-dev
 )
