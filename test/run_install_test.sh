@@ -16,9 +16,14 @@ fi
 cmake -S "$src/test/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/consumer" -j 2 >/dev/null
 LD_LIBRARY_PATH="$work/prefix/lib:$(dirname "$(find "$work/prefix" -name 'libpcl_flowseg.so' | head -1)")" "$work/consumer/consumer"
+# The same consumer through pkg-config (the .pc files find their prefix from where they lie).
 pc=$(find "$work/prefix" -name pcl_flowseg.pc | head -1)
-PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs pcl_flowseg | grep -q -- "-lpcl_flowseg"
-PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --libs pcl_flowseg_eval | grep -q -- "-lpcl_flowseg_eval"
+flags=$(PKG_CONFIG_PATH=$(dirname "$pc") pkg-config --cflags --libs pcl_flowseg_eval pcl_flowseg)
+echo "$flags" | grep -q -- "-lpcl_flowseg_eval"
+echo "$flags" | grep -qE -- "-lpcl_flowseg( |$)"
+# shellcheck disable=SC2086
+g++ -std=c++17 "$src/test/consumer/main.cpp" -o "$work/consumer_pkgconfig" $flags
+LD_LIBRARY_PATH="$work/prefix/lib:$(dirname "$(find "$work/prefix" -name 'libpcl_flowseg.so' | head -1)")" "$work/consumer_pkgconfig"
 # The library users link for segmentation carries no evaluation code and no ESF dependency.
 lib=$(find "$work/prefix" -name 'libpcl_flowseg.so' | head -1)
 if nm -DC "$lib" | grep -qE ' T .*(scoreRetrieval|esfDescriptor|sampleShapes)'; then
