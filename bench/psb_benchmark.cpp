@@ -9,6 +9,7 @@
  * with known parts, scored on their points. Prints one line per model and a table per category.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include <pcl_flowseg/common/feature_significance.h>
 #include <pcl_flowseg/io/atomic_file.h>
 #include "mesh_picture.h"
 #include "sdf_peer.h"
@@ -112,8 +113,10 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
     {
       char* end = nullptr;
       o.significance = std::strtod (argv[++i], &end);
-      if (*end || !std::isfinite (o.significance) || o.significance < 0 || o.significance >= 1)
-        return error = "--significance needs a number in [0, 1)", false;
+      if (*end)
+        return error = "--significance needs a number", false;
+      if (const pcl_flowseg::Status s = pcl_flowseg::checkSignificance (o.significance); !s)
+        return error = "--significance: " + s.message, false;
     }
     else if (a == "--paper-rule")
       o.flow.merge.sampling_tolerance = o.flow.merge.stump_ratio = o.flow.merge.compact_size = 0.0;
@@ -283,11 +286,9 @@ insignificantFeatures (const pcl_flowseg::FlowResult& result, double share)
   std::vector<std::uint32_t> out;
   if (!(share > 0.0))
     return out;
-  double total = 0.0;
-  for (int f : result.features)
-    total += result.segments[static_cast<std::size_t> (f)].volume;
+  const std::vector<int> significant = pcl_flowseg::significantSegments (result, result.features, share);
   for (std::size_t k = 0; k < result.features.size (); ++k)
-    if (result.segments[static_cast<std::size_t> (result.features[k])].volume < share * total)
+    if (std::find (significant.begin (), significant.end (), result.features[k]) == significant.end ())
       out.push_back (static_cast<std::uint32_t> (k));
   return out;
 }

@@ -8,6 +8,7 @@
  * relative to the bounding-box diagonal.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include <pcl_flowseg/common/feature_significance.h>
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/io/mesh_io.h>
 #include <pcl_flowseg/evaluation/shape_generator.h>
@@ -37,11 +38,10 @@ significantFeatures (const std::vector<Eigen::Vector3d>& pts, double significanc
   double total = 0;
   for (int k : r.features)
     total += r.segments[static_cast<std::size_t> (k)].volume;
-  for (int k : r.features)
+  for (int k : pcl_flowseg::significantSegments (r, r.features, significance))
   {
     const auto& s = r.segments[static_cast<std::size_t> (k)];
-    if (s.volume > significance * total)
-      out.push_back (Feature{s.volume / total, s.centroid});
+    out.push_back (Feature{s.volume / total, s.centroid});
   }
   return out;
 }
