@@ -66,20 +66,20 @@ addSignatures (const std::string& root, const std::vector<std::string>& files, c
   for (const auto& f : files)
     paths.push_back (root.empty () ? f : root + "/" + f);
   std::vector<pcl_flowseg::Signature> signatures;
-  std::vector<std::string> errors;
+  std::vector<pcl_flowseg::Status> statuses;
   {
     flowseg_app::ProgressLine progress ("signatures", files.size (), o.quiet);
     pcl_flowseg::signaturesOfShapeFiles (paths, o.signature.input, o.params, o.signature.significance, o.threads, signatures,
-                                         errors, [&] (std::size_t done, const std::string& path, const std::string& error) {
-                                           progress.update (done, path + (error.empty () ? "" : " (failed)"));
+                                         statuses, [&] (std::size_t done, const std::string& path, const pcl_flowseg::Status& s) {
+                                           progress.update (done, path + (s ? "" : " (failed)"));
                                          });
   }
   std::size_t failed = 0;
   for (std::size_t i = 0; i < files.size (); ++i)
   {
-    if (!errors[i].empty ())
+    if (!statuses[i])
     {
-      std::cerr << "flowseg_db: skipped " << errors[i] << "\n";
+      std::cerr << "flowseg_db: skipped " << statuses[i].message << "\n";
       ++failed;
       continue;
     }

@@ -136,9 +136,11 @@ describeShapes (const std::string& root, const Options& o, Collection& c)
   c.drawings.assign (n, {});
   c.dimensions.assign (n, 0);
   std::mutex timing;
+  Options per_job = o;
+  per_job.params.execution.threads = pcl_flowseg::threadsPerJob (n, o.threads);
   flowseg_app::ProgressLine progress ("describing shapes", n, o.quiet);
   pcl_flowseg::runParallelJobs (
-      n, o.threads, [&] (std::size_t i) { describeShape (root, o, i, c, timing); },
+      n, o.threads, [&] (std::size_t i) { describeShape (root, per_job, i, c, timing); },
       [&] (std::size_t done, std::size_t) { progress.update (done); });
 }
 
@@ -157,7 +159,8 @@ evaluateMethod (const std::string& name, double describe_ms, const std::function
   e.name = name;
   e.compare_ms_per_pair = msSince (t0) * pcl_flowseg::jobThreads (o.threads) / static_cast<double> (n * n); // CPU time
   e.describe_ms_per_shape = describe_ms / static_cast<double> (n);
-  e.scores = pcl_flowseg::scoreRetrieval (m, c.labels);
+  if (const pcl_flowseg::Status s = pcl_flowseg::scoreRetrieval (m, c.labels, e.scores); !s)
+    return s;
   return pcl_flowseg::writeRetrievalFigures (o.output, name, c.files, c.labels, m, c.drawings);
 }
 

@@ -22,8 +22,9 @@ printJson (const std::string& input, const pcl_flowseg::Signature& s)
                pcl_flowseg::jsonString (input).c_str (), s.dimension, jsonNumber (s.unit).c_str (),
                jsonNumber (s.interior_volume).c_str (), jsonNumber (s.significance).c_str ());
   for (std::size_t k = 0; k < s.points.size (); ++k)
-    std::printf ("%s{\"position\": [%.6f, %.6f, %.6f], \"weight\": %.6f}", k ? ", " : "", s.points[k].position.x (),
-                 s.points[k].position.y (), s.points[k].position.z (), s.points[k].weight);
+    std::printf ("%s{\"position\": [%s, %s, %s], \"weight\": %s}", k ? ", " : "", jsonNumber (s.points[k].position.x ()).c_str (),
+                 jsonNumber (s.points[k].position.y ()).c_str (), jsonNumber (s.points[k].position.z ()).c_str (),
+                 jsonNumber (s.points[k].weight).c_str ());
   std::printf ("]}\n");
 }
 

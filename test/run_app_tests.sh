@@ -159,6 +159,9 @@ done
 expect "db build" 0 "9 shapes" -- "$db" build "$work/shapes.db" "$work/tree" -j 2
 expect "db build, --jobs as before" 0 "9 shapes" -- "$db" build "$work/shapes2.db" "$work/tree" --jobs 2
 cmp -s "$work/shapes.db" "$work/shapes2.db"; check "the same database whatever the thread option's name" $?
+expect "db build sequential" 0 "9 shapes" -- "$db" build "$work/shapes3.db" "$work/tree" -j1
+cmp -s "$work/shapes.db" "$work/shapes3.db"; check "the same database with -j1 (sequential) as with -j 2" $?
+expect "db mesh points refused by the library's rule" 2 "mesh-points: .*4" -- "$db" build "$work/shapes4.db" "$work/tree" --mesh-points 2
 expect "db list" 0 "snowman3d" -- "$db" list "$work/shapes.db"
 expect "db query finds the class" 0 "^1.*snowman3d" -- "$db" query "$work/shapes.db" "$work/tree/snowman3d/snowman3d-1.pcd" -k 3
 expect "db add" 0 "10 shapes" -- "$db" add "$work/shapes.db" "$src/samples/hand2d.pcd" --label hand
@@ -197,6 +200,7 @@ mat="$build/apps/flowseg_match"
 expect "signature" 0 "significant features" -- "$sig" "$src/samples/snowman3d.pcd"
 expect "signature json" 0 '"points": \[' -- "$sig" "$src/samples/animal3d.pcd" --json
 expect "signature bad option" 2 "unknown option" -- "$sig" "$src/samples/animal3d.pcd" --frob
+expect "match alignment points refused by the library's rule" 2 "alignment-points: " -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --alignment-points 0
 expect "signature missing file" 1 "cannot open" -- "$sig" "$work/none.pcd"
 expect "signature corrupt file" 1 "not a PCD" -- "$sig" "$work/corrupt.pcd"
 expect "match itself" 0 "similarity 1.0000" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/animal3d.pcd"

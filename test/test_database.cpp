@@ -106,7 +106,8 @@ TEST (Retrieval, ScoresOfAKnownMatrix)
   const std::vector<std::string> labels = {"a", "a", "b", "b"};
   const std::vector<std::vector<double>> m = {
       {1, 0.9, 0.5, 0.1}, {0.9, 1, 0.2, 0.1}, {0.8, 0.1, 1, 0.7}, {0.1, 0.2, 0.8, 1}};
-  const RetrievalScores s = scoreRetrieval (m, labels);
+  RetrievalScores s;
+  ASSERT_TRUE (scoreRetrieval (m, labels, s));
   EXPECT_EQ (s.queries, 4u);
   EXPECT_DOUBLE_EQ (s.nearest_neighbour, 0.75); // shape 2's best match is shape 0
   EXPECT_DOUBLE_EQ (s.first_tier, 0.75);
@@ -116,6 +117,16 @@ TEST (Retrieval, ScoresOfAKnownMatrix)
   EXPECT_DOUBLE_EQ (s.dcg, 1.0);
   // Bull's eye: top 2C = 4 including the query: all of each class.
   EXPECT_DOUBLE_EQ (s.bulls_eye, 1.0);
+  // A matrix that does not fit the labels is refused, not read out of bounds.
+  std::vector<std::vector<double>> short_row = m;
+  short_row[2].pop_back ();
+  EXPECT_FALSE (scoreRetrieval (short_row, labels, s));
+  EXPECT_FALSE (scoreRetrieval ({m.begin (), m.begin () + 3}, labels, s));
+  std::vector<std::vector<double>> with_nan = m;
+  with_nan[1][3] = std::nan ("");
+  const Status refused = scoreRetrieval (with_nan, labels, s);
+  EXPECT_FALSE (refused);
+  EXPECT_NE (refused.message.find ("NaN"), std::string::npos) << refused.message;
 }
 
 TEST (Retrieval, D2IsInvariantAndDiscriminates)
@@ -219,6 +230,11 @@ TEST (ParallelJobs, EveryJobOnceAndProgressCountsUp)
   }
   EXPECT_GE (jobThreads (0), 1u);
   EXPECT_EQ (jobThreads (3), 3u);
+  EXPECT_EQ (threadsPerJob (10, 1), 1u); // -j 1: sequential all the way down
+  EXPECT_EQ (threadsPerJob (10, 2), 1u); // two jobs at a time share the cores
+  EXPECT_EQ (threadsPerJob (1, 2), 2u);  // one job gets them all
+  EXPECT_EQ (threadsPerJob (1, 0), 0u);
+  EXPECT_EQ (threadsPerJob (10, 0), jobThreads (0) > 1 ? 1u : 0u);
   runParallelJobs (0, 2, [] (std::size_t) { ADD_FAILURE () << "no job to run"; });
 }
 
@@ -233,7 +249,7 @@ TEST (Retrieval, SimilarityMatrixAndScoresFile)
       EXPECT_EQ (m[i][j], sim (i, j));
   MethodEvaluation e;
   e.name = "flow\"seg";
-  e.scores = scoreRetrieval (m, labels);
+  ASSERT_TRUE (scoreRetrieval (m, labels, e.scores));
   EXPECT_EQ (e.scores.nearest_neighbour, 1.0);
   char dir[] = "/tmp/flowseg_scores_XXXXXX";
   ASSERT_NE (mkdtemp (dir), nullptr);

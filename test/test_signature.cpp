@@ -196,6 +196,16 @@ TEST (Match, ParametersRoundTripAndAreChecked)
   MatchParameters bad;
   bad.alignment_points = 0;
   EXPECT_FALSE (checkMatchParameters (bad));
+  // The matcher refuses them too, rather than clamping them into something it did not get.
+  Signature two;
+  two.points = {{V::Zero (), 0.6}, {V (1, 0, 0), 0.4}};
+  EXPECT_TRUE (matcher.match (two, two).status);
+  matcher.setParameters (bad);
+  const pcl::SignatureMatcher::Result refused = matcher.match (two, two);
+  EXPECT_FALSE (refused.status);
+  EXPECT_NE (refused.status.message.find ("alignment"), std::string::npos) << refused.status.message;
+  EXPECT_EQ (refused.alignments, 0u);
+  EXPECT_LT (refused.similarity, -1e300);
 }
 
 TEST (Signature, SignificanceIsDecidedInOnePlace)
@@ -232,10 +242,10 @@ TEST (Signature, ManyFilesInParallelEqualOneByOne)
                                           samples + "dumbbell3d.pcd"};
   const FlowParameters params;
   std::vector<Signature> signatures;
-  std::vector<std::string> errors;
+  std::vector<Status> statuses;
   std::size_t reports = 0, last_done = 0;
-  signaturesOfShapeFiles (paths, ShapeInputOptions (), params, kDefaultSignificance, 2, signatures, errors,
-                          [&] (std::size_t done, const std::string& path, const std::string&) {
+  signaturesOfShapeFiles (paths, ShapeInputOptions (), params, kDefaultSignificance, 2, signatures, statuses,
+                          [&] (std::size_t done, const std::string& path, const Status&) {
                             ++reports;
                             EXPECT_GT (done, last_done);
                             last_done = done;
@@ -243,10 +253,11 @@ TEST (Signature, ManyFilesInParallelEqualOneByOne)
                           });
   ASSERT_EQ (signatures.size (), paths.size ());
   EXPECT_EQ (reports, paths.size ());
-  EXPECT_NE (errors[1].find ("missing.pcd"), std::string::npos) << errors[1];
+  EXPECT_FALSE (statuses[1].ok);
+  EXPECT_NE (statuses[1].message.find ("missing.pcd"), std::string::npos) << statuses[1].message;
   for (std::size_t i : {0u, 2u, 3u})
   {
-    EXPECT_TRUE (errors[i].empty ()) << errors[i];
+    EXPECT_TRUE (statuses[i].ok) << statuses[i].message;
     Signature one;
     ASSERT_TRUE (signatureOfShapeFile (paths[i], ShapeInputOptions (), params, kDefaultSignificance, one));
     ASSERT_EQ (one.points.size (), signatures[i].points.size ()) << paths[i];

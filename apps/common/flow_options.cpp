@@ -4,6 +4,8 @@
  */
 #include "common/flow_options.h"
 
+#include <limits>
+
 namespace flowseg_app {
 
 namespace {
@@ -34,7 +36,7 @@ addMergeOptions (OptionParser& p, pcl_flowseg::MergeParameters& merge)
             merge.compact_size, mergeCheck (&M::compact_size));
   pcl_flowseg::MergeParameters* m = &merge;
   p.action ("--paper-rule", "the paper's merging rule alone: tolerance, stump ratio and compact\nsize 0",
-            [m] () { m->sampling_tolerance = m->stump_ratio = m->compact_size = 0.0; });
+            [m] () { m->usePaperRule (); });
 }
 
 void
@@ -71,7 +73,12 @@ addSignatureOptions (OptionParser& p, SignatureOptions& o)
 {
   p.number ("--significance", "F", "features above this share of the interior volume are significant", o.significance,
             [] (double v) { return pcl_flowseg::checkSignificance (v); });
-  p.count ("--mesh-points", "N", "points sampled on a mesh's faces", o.input.mesh_points, 4, 100000000);
+  p.count ("--mesh-points", "N", "points sampled on a mesh's faces", o.input.mesh_points, 0, kLargestCount,
+           [] (long long v) {
+             pcl_flowseg::ShapeInputOptions input;
+             input.mesh_points = static_cast<std::size_t> (v);
+             return pcl_flowseg::checkShapeInputOptions (input);
+           });
 }
 
 void
@@ -83,7 +90,12 @@ addMatchOptions (OptionParser& p, pcl_flowseg::MatchParameters& match)
               m.threshold = v;
               return pcl_flowseg::checkMatchParameters (m);
             });
-  p.count ("--alignment-points", "N", "heaviest features that generate alignments", match.alignment_points, 1, 100);
+  p.count ("--alignment-points", "N", "heaviest features that generate alignments", match.alignment_points, 0,
+           std::numeric_limits<int>::max (), [] (long long v) {
+             pcl_flowseg::MatchParameters m;
+             m.alignment_points = static_cast<int> (v);
+             return pcl_flowseg::checkMatchParameters (m);
+           });
   bool* mirror = &match.allow_mirror;
   p.action ("--no-mirror", "do not match mirror images", [mirror] () { *mirror = false; });
 }

@@ -39,10 +39,11 @@ public:
   /** A finite number; \a check (optional) refuses values with the library's message. */
   void number (const std::string& names, const std::string& value, const std::string& help, double& target,
                std::function<pcl_flowseg::Status (double)> check = {});
-  /** A whole number in [\a min, \a max]. */
+  /** A whole number in [\a min, \a max]; \a check (optional) refuses values with the library's
+    * message. */
   template <class Integer>
   void count (const std::string& names, const std::string& value, const std::string& help, Integer& target,
-              long long min, long long max);
+              long long min, long long max, std::function<pcl_flowseg::Status (long long)> check = {});
   void text (const std::string& names, const std::string& value, const std::string& help, std::string& target);
   /** Three finite numbers X,Y,Z. */
   void point (const std::string& names, const std::string& help, std::optional<Eigen::Vector3d>& target);
@@ -86,6 +87,9 @@ private:
   std::vector<std::pair<std::string, std::string>> aliases_;
 };
 
+/** \brief The largest whole number an option takes before the library's own check. */
+constexpr long long kLargestCount = 1000000000000LL;
+
 /** \brief Parses a whole number; false when \a text is not exactly one in [min, max]. */
 bool
 parseWhole (const std::string& text, long long min, long long max, long long& value);
@@ -97,14 +101,17 @@ defaultText (double value);
 template <class Integer>
 void
 OptionParser::count (const std::string& names, const std::string& value, const std::string& help, Integer& target,
-                     long long min, long long max)
+                     long long min, long long max, std::function<pcl_flowseg::Status (long long)> check)
 {
   Integer* t = &target;
   const std::string first = names.substr (names.rfind (' ') + 1);
-  add (names, value, help, std::to_string (target), [t, min, max, first] (const std::string& text) {
+  add (names, value, help, std::to_string (target), [t, min, max, first, check] (const std::string& text) {
     long long v = 0;
     if (!parseWhole (text, min, max, v))
       return first + " needs a whole number from " + std::to_string (min) + " to " + std::to_string (max) + ", got '" + text + "'";
+    if (check)
+      if (const pcl_flowseg::Status s = check (v); !s)
+        return first + ": " + s.message;
     *t = static_cast<Integer> (v);
     return std::string ();
   });

@@ -18,6 +18,12 @@ jobThreads (unsigned requested)
   return requested > 0 ? requested : std::max (1u, std::thread::hardware_concurrency ());
 }
 
+unsigned
+threadsPerJob (std::size_t jobs, unsigned requested)
+{
+  return jobs > 1 && jobThreads (requested) > 1 ? 1u : requested;
+}
+
 void
 runParallelJobs (std::size_t n, unsigned threads, const std::function<void (std::size_t)>& job,
                  const std::function<void (std::size_t, std::size_t)>& progress)

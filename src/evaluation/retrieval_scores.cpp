@@ -12,11 +12,23 @@
 
 namespace pcl_flowseg {
 
-RetrievalScores
-scoreRetrieval (const std::vector<std::vector<double>>& similarity, const std::vector<std::string>& labels)
+Status
+scoreRetrieval (const std::vector<std::vector<double>>& similarity, const std::vector<std::string>& labels,
+                RetrievalScores& s)
 {
-  RetrievalScores s;
+  s = RetrievalScores ();
   const std::size_t n = labels.size ();
+  if (similarity.size () != n)
+    return Status::error ("the similarity matrix has " + std::to_string (similarity.size ()) + " rows for " +
+                          std::to_string (n) + " labels");
+  for (std::size_t q = 0; q < n; ++q)
+  {
+    if (similarity[q].size () != n)
+      return Status::error ("row " + std::to_string (q) + " of the similarity matrix has " +
+                            std::to_string (similarity[q].size ()) + " entries, not " + std::to_string (n));
+    if (std::any_of (similarity[q].begin (), similarity[q].end (), [] (double v) { return std::isnan (v); }))
+      return Status::error ("row " + std::to_string (q) + " of the similarity matrix holds NaN");
+  }
   std::map<std::string, std::size_t> class_size;
   for (const auto& l : labels)
     ++class_size[l];
@@ -62,7 +74,7 @@ scoreRetrieval (const std::vector<std::vector<double>>& similarity, const std::v
     s.dcg /= q;
     s.bulls_eye /= q;
   }
-  return s;
+  return Status::success ();
 }
 
 std::vector<std::vector<double>>

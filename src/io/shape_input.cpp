@@ -37,6 +37,8 @@ Status
 loadShapeSample (const std::string& path, const ShapeInputOptions& options, std::vector<Eigen::Vector3d>& points)
 {
   points.clear ();
+  if (const Status o = checkShapeInputOptions (options); !o)
+    return o;
   const std::string ext = detail::lowerExtension (path);
   if (isSilhouetteFile (path))
   {

@@ -29,21 +29,19 @@ signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, c
 void
 signaturesOfShapeFiles (const std::vector<std::string>& paths, const ShapeInputOptions& input, const FlowParameters& params,
                         double significance, unsigned threads, std::vector<Signature>& signatures,
-                        std::vector<std::string>& errors,
-                        const std::function<void (std::size_t, const std::string&, const std::string&)>& progress)
+                        std::vector<Status>& statuses,
+                        const std::function<void (std::size_t, const std::string&, const Status&)>& progress)
 {
+  FlowParameters per_job = params;
+  per_job.execution.threads = threadsPerJob (paths.size (), threads);
   signatures.assign (paths.size (), Signature ());
-  errors.assign (paths.size (), std::string ());
+  statuses.assign (paths.size (), Status::success ());
   runParallelJobs (
       paths.size (), threads,
-      [&] (std::size_t i) {
-        const Status s = signatureOfShapeFile (paths[i], input, params, significance, signatures[i]);
-        if (!s)
-          errors[i] = s.message;
-      },
+      [&] (std::size_t i) { statuses[i] = signatureOfShapeFile (paths[i], input, per_job, significance, signatures[i]); },
       [&] (std::size_t done, std::size_t i) {
         if (progress)
-          progress (done, paths[i], errors[i]);
+          progress (done, paths[i], statuses[i]);
       });
 }
 

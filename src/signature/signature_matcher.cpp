@@ -5,6 +5,7 @@
 #include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <flann/flann.hpp>
+#include <pcl/console/print.h>
 
 #include <Eigen/Geometry>
 
@@ -214,8 +215,8 @@ SignatureMatcher::alignOnto (const Signature& a, const Signature& b) const
   Result best;
   best.score = -std::numeric_limits<double>::infinity ();
   AlignmentScorer scorer (a, b, params_.threshold, best);
-  const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (std::max (1, params_.alignment_points)));
-  const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (std::max (1, params_.alignment_points)));
+  const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (params_.alignment_points));
+  const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (params_.alignment_points));
   const Eigen::Vector3d a0 = a.points[0].position;
   for (int mirror = 0; mirror < (params_.allow_mirror ? 2 : 1); ++mirror)
   {
@@ -235,6 +236,12 @@ SignatureMatcher::Result
 SignatureMatcher::match (const Signature& a, const Signature& b) const
 {
   Result r;
+  if (r.status = pcl_flowseg::checkMatchParameters (params_); !r.status)
+  {
+    PCL_ERROR ("[pcl::SignatureMatcher::match] %s\n", r.status.message.c_str ());
+    r.score = r.similarity = -std::numeric_limits<double>::infinity ();
+    return r;
+  }
   if (a.points.empty () || b.points.empty ())
   {
     for (const auto& p : a.points)

@@ -68,13 +68,21 @@ struct MergeParameters
     * compact pass). */
   double compact_size = 2.5;
 
-  /** \brief The paper's rule alone at \a rho: no sampling tolerance, compact pass or stumps. */
+  /** \brief Switches off what goes beyond the paper's rule (sampling tolerance, compact pass,
+    * stumps), keeping rho. */
+  void
+  usePaperRule ()
+  {
+    sampling_tolerance = stump_ratio = compact_size = 0.0;
+  }
+
+  /** \brief The paper's rule alone at \a rho. */
   static MergeParameters
   paperRule (double rho)
   {
     MergeParameters m;
     m.rho = rho;
-    m.sampling_tolerance = m.stump_ratio = m.compact_size = 0.0;
+    m.usePaperRule ();
     return m;
   }
 };

@@ -13,6 +13,12 @@ namespace pcl_flowseg {
 unsigned
 jobThreads (unsigned requested);
 
+/** \brief Threads each of \a jobs independent jobs may use inside itself when \a requested
+  * threads (0 = all cores) run them: all of them when the jobs run one at a time, else 1, since
+  * the jobs already share the cores. So `-j 1` means sequential all the way down. */
+unsigned
+threadsPerJob (std::size_t jobs, unsigned requested);
+
 /** \brief Calls \a job (i) for every i in [0, n) on jobThreads (\a threads) threads, each job once,
   * in no particular order; \a progress (optional) is called after each job with the number done
   * and the job's index, one call at a time. Jobs must not throw and must write only their own

@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <pcl_flowseg/common/status.h>
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -22,9 +24,11 @@ struct RetrievalScores
   std::size_t queries = 0;        ///< queries with at least one other shape of their class
 };
 
-/** \brief Scores \a similarity (higher = more similar; row = query) against \a labels. */
-RetrievalScores
-scoreRetrieval (const std::vector<std::vector<double>>& similarity, const std::vector<std::string>& labels);
+/** \brief Scores \a similarity (higher = more similar; row = query) against \a labels into
+  * \a scores; fails when the matrix is not square with one row per label, or holds NaN. */
+Status
+scoreRetrieval (const std::vector<std::vector<double>>& similarity, const std::vector<std::string>& labels,
+                RetrievalScores& scores);
 
 /** \brief The n x n matrix of \a similarity (i, j) for every pair, rows computed in parallel on
   * \a threads threads (0 = all cores); \a progress (optional) is told how many rows are done. */

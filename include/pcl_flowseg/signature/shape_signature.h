@@ -21,14 +21,14 @@ Status
 signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
                       double significance, Signature& signature);
 
-/** \brief The signatures of many shape files, on \a threads threads (0 = all cores), in the order
-  * of \a paths. A file that fails gets an empty signature and its message in \a errors (empty for
-  * the others); \a progress (optional) is told after each file how many are done and which file
-  * (with its error, if any) was the last. */
+/** \brief The signatures of many shape files, on \a threads threads (0 = all cores; see
+  * threadsPerJob), in the order of \a paths, with each file's Status in \a statuses: a file that
+  * fails gets an empty signature and its message; \a progress (optional) is told after each file
+  * how many are done and which file (with its Status) was the last. */
 void
 signaturesOfShapeFiles (const std::vector<std::string>& paths, const ShapeInputOptions& input, const FlowParameters& params,
                         double significance, unsigned threads, std::vector<Signature>& signatures,
-                        std::vector<std::string>& errors,
-                        const std::function<void (std::size_t done, const std::string& path, const std::string& error)>& progress = {});
+                        std::vector<Status>& statuses,
+                        const std::function<void (std::size_t done, const std::string& path, const Status& status)>& progress = {});
 
 } // namespace pcl_flowseg

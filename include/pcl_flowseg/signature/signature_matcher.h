@@ -70,6 +70,9 @@ public:
     /** Matched pairs (index in the first signature, index in the second). */
     std::vector<std::pair<int, int>> pairs;
     std::size_t alignments = 0; ///< alignments scored
+    /** Why nothing was matched (parameters that checkMatchParameters refuses; score and
+      * similarity are then -infinity), or ok. */
+    pcl_flowseg::Status status;
   };
 
   SignatureMatcher () = default;
@@ -89,7 +92,8 @@ public:
   inline int getAlignmentPoints () const { return params_.alignment_points; }
 
   /** \brief Similarity of \a a and \a b. Empty signatures score 0 against empty ones and minus the
-    * other's total weight otherwise. */
+    * other's total weight otherwise. Parameters that checkMatchParameters refuses match nothing:
+    * Result::status says why. */
   Result match (const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b) const;
 
 protected:
