@@ -24,6 +24,18 @@ ALLOWED = {
 }
 PUBLIC_MAY_NOT = {'core'}
 
+# Inside the core (src/core/STEP/): what each step of the pipeline may include besides itself.
+CORE_ALLOWED = {
+    'support': set(),
+    'geometry': set(),
+    'delaunay': {'support'},
+    'preparation': {'support'},
+    'flow': {'support', 'geometry', 'delaunay'},
+    'interior': {'support', 'geometry', 'delaunay'},
+    'labels': {'support', 'geometry'},
+    'merging': {'support', 'geometry', 'flow'},
+}
+
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]')
 
 
@@ -47,6 +59,17 @@ def layer_of_include(header):
     return None
 
 
+def check_core_step(relative, header):
+    """Why an include between two steps of the core points the wrong way, or None."""
+    source = relative.split(os.sep)[2] if relative.count(os.sep) >= 3 else '?'
+    target = header.split('/')[1] if header.count('/') >= 2 else '?'
+    if source not in CORE_ALLOWED or target not in CORE_ALLOWED:
+        return 'core step %s or %s is not in CORE_ALLOWED' % (source, target)
+    if target != source and target not in CORE_ALLOWED[source]:
+        return 'core/%s includes core/%s (%s)' % (source, target, header)
+    return None
+
+
 def check(root):
     problems = []
     for top in ('src', 'include'):
@@ -66,6 +89,11 @@ def check(root):
                 for number, line in enumerate(lines, 1):
                     match = INCLUDE.match(line)
                     target = layer_of_include(match.group(1)) if match else None
+                    if target == 'core' and layer == 'core':
+                        problem = check_core_step(relative, match.group(1))
+                        if problem:
+                            problems.append('%s:%d: %s' % (relative, number, problem))
+                        continue
                     if target is None or target == layer:
                         continue
                     public = relative.startswith('include')
