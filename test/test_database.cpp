@@ -86,6 +86,14 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
       {head + "shape a 3 1 1 0.02 1 name\np 0 0 nan 0.5\n", ":4:"},
       {head + "shape a 4 1 1 0.02 1 name\np 0 0 0 1\n", ":3:"},
       {head + "shape a 3 1 1 0.02 1\np 0 0 0 1\n", "name"},
+      // Numbers that parse but are absurd: refused at their line, never handed to a query.
+      {head + "shape a 3 1 1 0.02 1 name\np 0 0 1 88888888888888888888888888888880.6\n", ":4: the weight"},
+      {head + "shape a 3 1 1 0.02 1 name\np 1e300 0 0 1\n", ":4: coordinates"},
+      {head + "shape a 3 1 1 0.02 1 name\np 0 0 0 -0.5\n", ":4: the weight"},
+      {head + "shape a 3 0 1 0.02 1 name\np 0 0 0 1\n", ":3: shape 'name': the unit"},
+      {head + "shape a 3 1 1 0.02 2 name\np 0 0 0 0.5\np 1 0 0 0.2\n", ":3: shape 'name': the weights sum"},
+      {head + "shape a 3 1 1 0.02 2 name\np 0 0 0 0.4\np 1 0 0 0.6\n", ":3: shape 'name': the points are not ordered"},
+      {head + "shape a 3 1 1 1.5 1 name\np 0 0 0 1\n", ":3: shape 'name': "},
       {"", "not a pcl_flowseg"},
   };
   for (std::size_t k = 0; k < cases.size (); ++k)

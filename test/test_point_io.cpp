@@ -4,6 +4,8 @@
  */
 #include "test_support.h"
 
+#include <pcl_flowseg/signature/signature_database.h>
+
 #include <pcl_flowseg/segmentation/flow_segmentation.h>
 #include <pcl_flowseg/io/point_io.h>
 #include <pcl_flowseg/io/point_cloud_writer.h>
@@ -270,7 +272,8 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
   // Each file once crashed a reader (found by scripts/fuzz.sh); now each is refused with a message.
   const std::string dir = std::string (PCL_FLOWSEG_SOURCE_DIR) + "/test/data/fuzz_regressions/";
   std::size_t checked = 0;
-  for (const char* name : {"mesh_ply_header_27fc9764.ply", "pgm_huge_width_dcafbfbf.pgm"})
+  for (const char* name : {"mesh_ply_header_27fc9764.ply", "pgm_huge_width_dcafbfbf.pgm", "mesh_ply_negative_count.ply",
+                           "point_pcd_size_type.pcd"})
   {
     const std::string path = dir + name;
     std::vector<Eigen::Vector3d> pts;
@@ -282,7 +285,21 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
     EXPECT_FALSE (loadTriangleMesh (path, mesh).ok && loadGreyImage (path, image).ok);
     ++checked;
   }
-  EXPECT_EQ (checked, 2u);
+  EXPECT_EQ (checked, 4u);
+  // The causes, named: a negative element count is refused before PCL allocates for it, and a
+  // binary PCD field whose SIZE does not fit its TYPE before it is read past its record.
+  std::vector<Eigen::Vector3d> pts;
+  const Status ply = loadShapeSample (dir + "mesh_ply_negative_count.ply", ShapeInputOptions (), pts);
+  EXPECT_NE (ply.message.find ("count that is not a whole number"), std::string::npos) << ply.message;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  const Status pcd = loadPointCloud (dir + "point_pcd_size_type.pcd", cloud);
+  EXPECT_FALSE (pcd.ok);
+  EXPECT_NE (pcd.message.find ("SIZE that does not fit its TYPE"), std::string::npos) << pcd.message;
+  // A database with an absurd weight (a query on it once died with SIGSEGV) is refused at its line.
+  SignatureDatabase db;
+  const Status loaded = db.load (dir + "database_absurd_weight.db");
+  EXPECT_FALSE (loaded.ok);
+  EXPECT_NE (loaded.message.find (":4: the weight"), std::string::npos) << loaded.message;
 }
 
 TEST (PointIO, PointNormalCloudCarriesNormalsAndViewpoint)

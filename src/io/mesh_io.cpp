@@ -5,6 +5,7 @@
 #include <pcl_flowseg/io/mesh_io.h>
 
 #include "io/file_extension.h"
+#include "io/ply_header.h"
 #include "io/point_fields.h"
 
 #include <pcl/PolygonMesh.h>
@@ -133,6 +134,8 @@ loadObj (const std::string& path, std::istream& in, TriangleMesh& mesh)
 Status
 loadPly (const std::string& path, TriangleMesh& mesh)
 {
+  if (const Status header = detail::checkPlyHeader (path); !header)
+    return header;
   pcl::PolygonMesh poly;
   if (pcl::io::loadPLYFile (path, poly) < 0)
     return Status::error (path + ": not a readable PLY file");

@@ -34,8 +34,14 @@ readPointFields (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::
   if (blob.point_step == 0 || blob.data.size () < n * blob.point_step)
     return Status::error (path + ": point data shorter than its header says");
   for (const auto* f : {axis[0], axis[1], axis[2], normal[0], normal[1], normal[2]})
+  {
+    // A size that does not fit the type (SIZE 2 with TYPE F, say) leaves no datatype at all.
+    if (f && (f->datatype < pcl::PCLPointField::INT8 || f->datatype > pcl::PCLPointField::FLOAT64))
+      return Status::error (path + ": field '" + f->name + "' is not a 1-8 byte integer or a float/double"
+                            " (a SIZE that does not fit its TYPE?)");
     if (f && f->offset + pcl::getFieldSize (f->datatype) > blob.point_step)
       return Status::error (path + ": field '" + f->name + "' lies outside the point record");
+  }
   auto read = [&] (const pcl::PCLPointField* f, const std::uint8_t* record) -> double {
     if (!f)
       return 0.0;
@@ -49,7 +55,7 @@ readPointFields (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::
       case pcl::PCLPointField::INT32: { std::int32_t v; std::memcpy (&v, p, 4); return v; }
       case pcl::PCLPointField::UINT32: { std::uint32_t v; std::memcpy (&v, p, 4); return v; }
       case pcl::PCLPointField::FLOAT64: { double v; std::memcpy (&v, p, 8); return v; }
-      default: { float v; std::memcpy (&v, p, 4); return v; }
+      default: { float v; std::memcpy (&v, p, 4); return v; } // FLOAT32: the others are refused above
     }
   };
   cloud.reserve (n);

@@ -6,6 +6,7 @@
 #include <pcl_flowseg/common/system_memory.h>
 
 #include "io/file_extension.h"
+#include "io/ply_header.h"
 #include "io/point_fields.h"
 
 #include <pcl/PCLPointCloud2.h>
@@ -288,12 +289,8 @@ checkPcdHeader (const std::string& path)
 Status
 loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
 {
-  if (pcd)
-  {
-    const Status header = checkPcdHeader (path);
-    if (!header)
-      return header;
-  }
+  if (const Status header = pcd ? checkPcdHeader (path) : detail::checkPlyHeader (path); !header)
+    return header;
   pcl::PCLPointCloud2 blob;
   Eigen::Vector4f origin = Eigen::Vector4f::Zero ();
   Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity ();

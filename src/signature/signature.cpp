@@ -53,4 +53,33 @@ signatureFromSegmentation (const FlowResult& result, double significance, Signat
   return Status::success ();
 }
 
+Status
+checkSignature (const Signature& signature)
+{
+  const Signature& s = signature;
+  if (s.dimension != 2 && s.dimension != 3)
+    return Status::error ("dimension " + std::to_string (s.dimension) + " is neither 2 nor 3");
+  if (!std::isfinite (s.unit) || s.unit <= 0.0)
+    return Status::error ("the unit must be a finite number > 0");
+  if (!std::isfinite (s.interior_volume) || s.interior_volume < 0.0)
+    return Status::error ("the interior volume must be a finite number >= 0");
+  if (const Status f = checkSignificance (s.significance); !f)
+    return f;
+  double total = 0.0;
+  for (std::size_t k = 0; k < s.points.size (); ++k)
+  {
+    const WeightedPoint& p = s.points[k];
+    if (!p.position.allFinite () || p.position.cwiseAbs ().maxCoeff () > kLargestSignatureCoordinate)
+      return Status::error ("point " + std::to_string (k + 1) + " lies outside the normalised frame");
+    if (!(p.weight >= 0.0 && p.weight <= 1.0))
+      return Status::error ("point " + std::to_string (k + 1) + " has a weight outside [0, 1]");
+    if (k > 0 && p.weight > s.points[k - 1].weight)
+      return Status::error ("the points are not ordered by decreasing weight");
+    total += p.weight;
+  }
+  if (!s.points.empty () && std::abs (total - 1.0) > 1e-9)
+    return Status::error ("the weights sum to " + std::to_string (total) + ", not 1");
+  return Status::success ();
+}
+
 } // namespace pcl_flowseg

@@ -73,15 +73,22 @@ SignatureDatabase::load (const std::string& path)
     std::getline (head >> std::ws, e.name);
     if (e.name.empty ())
       return lineError (path, number, "shape without a name");
+    const std::size_t shape_line = number;
     for (std::size_t k = 0; k < points; ++k)
     {
       ++number;
       WeightedPoint p;
       if (!std::getline (in, line) || !(std::istringstream (line) >> word >> p.position.x () >> p.position.y () >> p.position.z () >> p.weight) ||
-          word != "p" || !p.position.allFinite () || !std::isfinite (p.weight) || p.weight < 0)
+          word != "p")
         return lineError (path, number, "expected 'p X Y Z WEIGHT'");
+      if (!p.position.allFinite () || p.position.cwiseAbs ().maxCoeff () > kLargestSignatureCoordinate)
+        return lineError (path, number, "coordinates must be finite numbers of at most 1e9 in size");
+      if (!(p.weight >= 0.0 && p.weight <= 1.0))
+        return lineError (path, number, "the weight must be a number in [0, 1]");
       e.signature.points.push_back (p);
     }
+    if (const Status checked = checkSignature (e.signature); !checked)
+      return lineError (path, shape_line, "shape '" + e.name + "': " + checked.message);
     loaded.push_back (std::move (e));
   }
   entries_ = std::move (loaded);
@@ -194,6 +201,8 @@ SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::
   hits.reserve (wanted);
   for (std::size_t r = 0; r < wanted; ++r)
   {
+    if (rows[r] < 0 || static_cast<std::size_t> (rows[r]) >= stored)
+      break; // FLANN leaves rows unset when distances are not numbers; stored summaries never are
     QueryHit hit;
     hit.entry = tree.entry[static_cast<std::size_t> (rows[r])];
     hit.summary_distance = std::sqrt (static_cast<double> (distances[r]));

@@ -37,6 +37,18 @@ struct Signature
   double significance = kDefaultSignificance;
 };
 
+/** \brief Largest coordinate a signature point may have, in the signature's unit: a feature's
+  * centroid lies inside the shape, and even a needle a billion times longer than it is thick stays
+  * well below this. */
+constexpr double kLargestSignatureCoordinate = 1e9;
+
+/** \brief Why \a signature is not one signatureFromSegmentation could have made (a message), or
+  * success: dimension 2 or 3; unit finite and > 0; interior volume finite and >= 0; significance in
+  * [0, 1); positions finite and within kLargestSignatureCoordinate; weights in [0, 1], non-increasing,
+  * summing to 1. Whatever is read from outside is checked with it before it is compared. */
+Status
+checkSignature (const Signature& signature);
+
 /** \brief Builds the signature from a segmentation with interior/exterior separation. Fails when the
   * separation was not computed or found no interior. */
 Status

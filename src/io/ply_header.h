@@ -1,0 +1,23 @@
+/*
+ * pcl_flowseg - internal: a PLY header checked before PCL's reader trusts it.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/common/status.h>
+
+#include <string>
+
+namespace pcl_flowseg {
+namespace detail {
+
+/** \brief Why the PLY file \a path must not be handed to PCL's reader, or success: its header
+  * must start with "ply", end with "end_header" within 1 MiB, declare every element count as a
+  * whole number >= 0, and the elements it declares (at least one byte per property and record)
+  * must fit in what follows the header. PCL's reader would otherwise allocate what a count
+  * claims (a negative count became 51 GB). */
+Status
+checkPlyHeader (const std::string& path);
+
+} // namespace detail
+} // namespace pcl_flowseg
