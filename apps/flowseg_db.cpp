@@ -12,7 +12,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -56,11 +55,12 @@ makeParser (Options& o)
   return p;
 }
 
-/** Adds the signatures of \a files (read at root + "/" + file, or as given when root is empty) to
-  * \a db; false when every file failed. */
+/** The entries of \a files (read at root + "/" + file, or as given when root is empty), labelled
+  * \a label or by their folder; false when every file failed. Computed before the database is
+  * locked, so that other writers wait only for the write itself. */
 bool
-addSignatures (const std::string& root, const std::vector<std::string>& files, const Options& o, const std::string& label,
-               pcl_flowseg::SignatureDatabase& db)
+computeEntries (const std::string& root, const std::vector<std::string>& files, const Options& o, const std::string& label,
+                std::vector<pcl_flowseg::ShapeEntry>& entries)
 {
   std::vector<std::string> paths;
   for (const auto& f : files)
@@ -89,15 +89,16 @@ addSignatures (const std::string& root, const std::vector<std::string>& files, c
     if (entry.label.empty ())
       entry.label = "-";
     entry.signature = signatures[i];
-    db.add (entry);
+    entries.push_back (std::move (entry));
   }
   if (!o.quiet)
     std::fprintf (stderr, "%zu signatures computed, %zu files skipped\n", files.size () - failed, failed);
   return failed < files.size () || files.empty ();
 }
 
+/** Replaces the database at args[1] with the signatures of every shape file below args[2]. */
 int
-build (const OptionParser& p, const std::vector<std::string>& args, const Options& o, pcl_flowseg::SignatureDatabase& db)
+build (const OptionParser& p, const std::vector<std::string>& args, const Options& o, std::size_t& stored)
 {
   if (args.size () != 3)
     return p.usageError ("build needs DB and ROOT");
@@ -106,19 +107,36 @@ build (const OptionParser& p, const std::vector<std::string>& args, const Option
     return p.failure (s.message);
   if (files.empty ())
     return p.failure ("no shape files below " + args[2]);
-  return addSignatures (args[2], files, o, "", db) ? flowseg_app::kContinue : flowseg_app::kExitFailure;
+  std::vector<pcl_flowseg::ShapeEntry> entries;
+  if (!computeEntries (args[2], files, o, "", entries))
+    return flowseg_app::kExitFailure;
+  pcl_flowseg::SignatureDatabase db;
+  for (const auto& e : entries)
+    db.add (e);
+  if (const pcl_flowseg::Status saved = db.save (args[1]); !saved)
+    return p.failure (saved.message);
+  stored = db.size ();
+  return flowseg_app::kExitSuccess;
 }
 
+/** Adds the signatures of args[2...] to the database at args[1] in one locked transaction, so that
+  * concurrent adds lose nothing. */
 int
-add (const OptionParser& p, const std::vector<std::string>& args, const Options& o, pcl_flowseg::SignatureDatabase& db)
+add (const OptionParser& p, const std::vector<std::string>& args, const Options& o, std::size_t& stored)
 {
   if (args.size () < 3)
     return p.usageError ("add needs DB and at least one FILE");
-  if (std::ifstream (args[1]).good ())
-    if (const pcl_flowseg::Status s = db.load (args[1]); !s)
-      return p.failure (s.message);
   const std::vector<std::string> files (args.begin () + 2, args.end ());
-  return addSignatures ("", files, o, o.label, db) ? flowseg_app::kContinue : flowseg_app::kExitFailure;
+  std::vector<pcl_flowseg::ShapeEntry> entries;
+  if (!computeEntries ("", files, o, o.label, entries))
+    return flowseg_app::kExitFailure;
+  const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase::update (args[1], [&] (pcl_flowseg::SignatureDatabase& db) {
+    for (const auto& e : entries)
+      db.add (e);
+    stored = db.size ();
+    return pcl_flowseg::Status::success ();
+  });
+  return s ? flowseg_app::kExitSuccess : p.failure (s.message);
 }
 
 int
@@ -177,25 +195,18 @@ main (int argc, char** argv)
   if (!o.label.empty () && o.label.find_first_of (" \t\n") != std::string::npos)
     return parser.usageError ("--label needs a class name without white space");
   const std::string& command = args[0];
-  pcl_flowseg::SignatureDatabase db;
-  int status;
-  if (command == "build")
-    status = build (parser, args, o, db);
-  else if (command == "add")
-    status = add (parser, args, o, db);
-  else if (command == "query" || command == "list")
+  if (command == "query" || command == "list")
   {
+    pcl_flowseg::SignatureDatabase db;
     if (const pcl_flowseg::Status s = db.load (args[1]); !s)
       return parser.failure (s.message);
     return command == "list" ? list (parser, args, db) : query (parser, args, o, db);
   }
-  else
+  if (command != "build" && command != "add")
     return parser.usageError ("unknown command '" + command + "' (build, add, query, list)");
-  if (status != flowseg_app::kContinue)
-    return status;
-  if (const pcl_flowseg::Status saved = db.save (args[1]); !saved)
-    return parser.failure (saved.message);
-  if (!o.quiet)
-    std::fprintf (stderr, "%s: %zu shapes\n", args[1].c_str (), db.size ());
-  return flowseg_app::kExitSuccess;
+  std::size_t stored = 0;
+  const int status = command == "build" ? build (parser, args, o, stored) : add (parser, args, o, stored);
+  if (status == flowseg_app::kExitSuccess && !o.quiet)
+    std::fprintf (stderr, "%s: %zu shapes\n", args[1].c_str (), stored);
+  return status;
 }

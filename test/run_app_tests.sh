@@ -173,6 +173,35 @@ expect "db foreign file" 1 "not a pcl_flowseg signature database" -- "$db" query
 expect "db missing file" 1 "cannot open" -- "$db" list "$work/none.db"
 expect "db bad command" 2 "unknown command" -- "$db" frobnicate "$work/shapes.db"
 expect "db bad k" 2 "-k" -- "$db" query "$work/shapes.db" x.pcd -k -3
+
+# --- concurrent writers: every added shape is there afterwards ----------------------------------
+"$db" build "$work/conc.db" "$work/tree/snowman3d" -q
+adders=0
+for f in "$work"/tree/*/*.pcd "$src"/samples/*.pcd; do
+  "$db" add "$work/conc.db" "$f" -j 1 -q 2>>"$work/conc.err" &
+  adders=$((adders + 1))
+done
+wait
+present=$("$db" list "$work/conc.db" | wc -l)
+[ "$present" -eq $((3 + adders)) ]; check "$adders concurrent adds to one database: $((3 + adders)) shapes expected, $present present" $?
+[ ! -s "$work/conc.err" ]; check "concurrent adds report no error" $?
+
+# --- damaged databases: every verb refuses them with the line, none changes them ----------------
+printf 'pcl_flowseg signature database 1\nshapes 2\nshape a 3 1 1 0.02 1 one\np 0 0 0 1\n' > "$work/truncated.db"
+printf 'pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 1 one\np 0 0 1 8888888888888888888888888888888888880.6\n' > "$work/absurd.db"
+printf 'pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 3 one\np 0 0 0 1\nshape b 3 1 1 0.02 1 two\n' > "$work/counts.db"
+printf 'pcl_flowseg signature database 1\n\x00\x01\xff\xfe garbage \x80\n' > "$work/garbage.db"
+for bad in truncated absurd counts garbage; do
+  cp "$work/$bad.db" "$work/$bad.before"
+  expect "db list $bad database" 1 "$bad.db" -- "$db" list "$work/$bad.db"
+  expect "db query $bad database" 1 "$bad.db" -- "$db" query "$work/$bad.db" "$src/samples/snowman3d.pcd"
+  expect "db add to $bad database" 1 "$bad.db" -- "$db" add "$work/$bad.db" "$src/samples/snowman3d.pcd"
+  cmp -s "$work/$bad.db" "$work/$bad.before"; check "db add leaves the $bad database as it was" $?
+  expect "match against $bad database as a shape" 1 "$bad.db" -- "$build/apps/flowseg_match" "$src/samples/snowman3d.pcd" "$work/$bad.db"
+done
+expect "db absurd number refused at its line" 1 "absurd.db:4: the weight" -- "$db" query "$work/absurd.db" "$src/samples/snowman3d.pcd"
+expect "db build replaces a damaged database" 0 "3 shapes" -- "$db" build "$work/garbage.db" "$work/tree/animal3d"
+expect "db the rebuilt database reads" 0 "animal3d" -- "$db" list "$work/garbage.db"
 expect "eval" 0 "flowseg.*NN" -- "$ev" "$work/tree" -o "$work/eval" -j 2
 if command -v python3 >/dev/null 2>&1; then
   python3 - "$work/eval" <<'PY'

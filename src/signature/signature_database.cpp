@@ -5,6 +5,7 @@
 #include <pcl_flowseg/signature/signature_database.h>
 
 #include <pcl_flowseg/io/atomic_file.h>
+#include <pcl_flowseg/io/file_lock.h>
 
 #include <pcl_flowseg/signature/signature_summary.h>
 
@@ -18,6 +19,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <unistd.h>
 
 namespace pcl_flowseg {
 
@@ -100,8 +102,40 @@ SignatureDatabase::load (const std::string& path)
 }
 
 Status
-SignatureDatabase::save (const std::string& path) const
+SignatureDatabase::save (const std::string& path, double lock_wait) const
 {
+  FileLock lock;
+  if (const Status s = lock.acquire (path, lock_wait); !s)
+    return s;
+  return saveLocked (path);
+}
+
+Status
+SignatureDatabase::update (const std::string& path, const std::function<Status (SignatureDatabase&)>& change,
+                           double lock_wait)
+{
+  FileLock lock;
+  if (const Status s = lock.acquire (path, lock_wait); !s)
+    return s;
+  SignatureDatabase db;
+  if (::access (path.c_str (), F_OK) == 0)
+    if (const Status s = db.load (path); !s)
+      return s;
+  if (const Status s = change (db); !s)
+    return s;
+  return db.saveLocked (path);
+}
+
+Status
+SignatureDatabase::saveLocked (const std::string& path) const
+{
+  for (const ShapeEntry& e : entries_)
+  {
+    if (const Status s = checkSignature (e.signature); !s)
+      return Status::error ("cannot write " + path + ": shape '" + e.name + "': " + s.message);
+    if (e.name.empty () || e.name.find ('\n') != std::string::npos || e.label.find_first_of (" \t\n") != std::string::npos)
+      return Status::error ("cannot write " + path + ": shape '" + e.name + "': names must be one line, labels one word");
+  }
   return writeFileAtomically (path, [&] (const std::string& tmp) {
     std::ofstream out (tmp, std::ios::binary);
     if (!out)
@@ -117,7 +151,7 @@ SignatureDatabase::save (const std::string& path) const
     }
     out.flush ();
     return out.good () ? Status::success () : Status::error ("write failed");
-  });
+  }, true);
 }
 
 bool

@@ -7,7 +7,9 @@
 #include <pcl_flowseg/signature/signature.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
 #include <pcl_flowseg/common/status.h>
+#include <pcl_flowseg/io/file_lock.h>
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -53,9 +55,24 @@ class SignatureDatabase
 public:
   static constexpr int kVersion = 1;
 
+  /** Reads a database file. It needs no lock: writers replace the file in one rename, so a
+    * reader sees one complete version. Every value is checked (checkSignature); the first problem
+    * is reported with its line. */
   Status load (const std::string& path);
-  /** Writes the whole database (to a temporary file, renamed when complete). */
-  Status save (const std::string& path) const;
+  /** Writes the whole database, under the file's lock (FileLock, waiting at most \a lock_wait
+    * seconds), to a temporary file flushed to the disk and renamed when complete: a writer that
+    * dies leaves the previous complete file. Refuses entries that checkSignature refuses. To change
+    * a database other processes may change too, use update(), not load() + save(). */
+  Status save (const std::string& path, double lock_wait = kDefaultLockWait) const;
+
+  /** \brief Read-modify-write of the database file \a path as one transaction: under the file's
+    * lock, loads it (empty when it does not exist), calls \a change, and saves the result as
+    * save() does. Concurrent updates from any number of processes and threads serialise, so none
+    * is lost. Keep \a change short (compute signatures before): other writers wait for it.
+    * \return the first failure: the lock not had within \a lock_wait seconds, the file not
+    *         readable, \a change's own Status, or the write; the file is then unchanged. */
+  static Status update (const std::string& path, const std::function<Status (SignatureDatabase&)>& change,
+                        double lock_wait = kDefaultLockWait);
 
   /** Adds a shape, replacing a stored one of the same name. \return true when it was new. */
   bool add (const ShapeEntry& entry);
@@ -75,6 +92,8 @@ public:
   std::vector<QueryHit> query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const;
 
 private:
+  Status saveLocked (const std::string& path) const;
+
   struct CandidateIndex;
   /** The candidate index, built on the first query after a change. */
   std::shared_ptr<const CandidateIndex> candidateIndex () const;
