@@ -82,6 +82,10 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
       {"hello world\n", "not a pcl_flowseg signature database"},
       {"pcl_flowseg signature database 7\nshapes 0\n", "version"},
       {"pcl_flowseg signature database 1\nshapes x\n", ":2:"},
+      // A count the file cannot hold is refused before anything is allocated (fuzzing: 44 million
+      // shapes in a 49-byte file asked for 4 GB).
+      {"pcl_flowseg signature database 1\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
+      {"pcl_flowseg signature database 1\nshapes -1\n", ":2:"},
       {head + "shape a 3 1 1 0.02 2 name\np 0 0 0 0.5\n", ":5:"},
       {head + "shape a 3 1 1 0.02 1 name\np 0 0 nan 0.5\n", ":4:"},
       {head + "shape a 4 1 1 0.02 1 name\np 0 0 0 1\n", ":3:"},

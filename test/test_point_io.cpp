@@ -300,6 +300,8 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
   const Status loaded = db.load (dir + "database_absurd_weight.db");
   EXPECT_FALSE (loaded.ok);
   EXPECT_NE (loaded.message.find (":4: the weight"), std::string::npos) << loaded.message;
+  const Status huge = db.load (dir + "database_huge_count_24256e5a.db");
+  EXPECT_NE (huge.message.find (":2: 44204242 shapes cannot fit"), std::string::npos) << huge.message;
 }
 
 TEST (PointIO, PointNormalCloudCarriesNormalsAndViewpoint)

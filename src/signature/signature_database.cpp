@@ -31,6 +31,32 @@ lineError (const std::string& path, std::size_t line, const std::string& what)
 {
   return Status::error (path + ":" + std::to_string (line) + ": " + what);
 }
+
+/** Reads the first two lines (magic and version, "shapes N") into \a count. Every shape takes a
+  * line of at least 20 bytes ("shape L 3 1 1 0 0 N\n"), so a count the rest of the file cannot
+  * hold is refused before anything is allocated for it. */
+Status
+readHeader (std::istream& in, const std::string& path, std::size_t& count)
+{
+  std::string line, word;
+  if (!std::getline (in, line) || line.compare (0, std::strlen (kMagic), kMagic) != 0)
+    return Status::error (path + ": not a pcl_flowseg signature database");
+  int version = 0;
+  if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version) || version != SignatureDatabase::kVersion)
+    return lineError (path, 1, "unsupported database version (this build reads version " +
+                                   std::to_string (SignatureDatabase::kVersion) + ")");
+  if (!std::getline (in, line) || !(std::istringstream (line) >> word >> count) || word != "shapes")
+    return lineError (path, 2, "expected 'shapes N'");
+  in.clear (); // a file that ends right after this line has set eof
+  const std::streampos here = in.tellg ();
+  in.seekg (0, std::ios::end);
+  const auto rest = static_cast<unsigned long long> (in.tellg () - here);
+  in.seekg (here);
+  if (count > rest / 20)
+    return lineError (path, 2, std::to_string (count) + " shapes cannot fit in the " + std::to_string (rest) +
+                                   " bytes that follow");
+  return Status::success ();
+}
 } // namespace
 
 Status
@@ -42,20 +68,11 @@ SignatureDatabase::load (const std::string& path)
   std::ifstream in (path, std::ios::binary);
   if (!in)
     return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
-  std::string line;
-  std::size_t number = 1;
-  if (!std::getline (in, line) || line.compare (0, std::strlen (kMagic), kMagic) != 0)
-    return Status::error (path + ": not a pcl_flowseg signature database");
-  int version = 0;
-  if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version) || version != kVersion)
-    return lineError (path, number, "unsupported database version (this build reads version " + std::to_string (kVersion) + ")");
   std::size_t count = 0;
-  ++number;
-  {
-    std::string word;
-    if (!std::getline (in, line) || !(std::istringstream (line) >> word >> count) || word != "shapes" || count > 100000000)
-      return lineError (path, number, "expected 'shapes N'");
-  }
+  if (const Status header = readHeader (in, path, count); !header)
+    return header;
+  std::string line;
+  std::size_t number = 2;
   std::vector<ShapeEntry> loaded;
   loaded.reserve (count);
   for (std::size_t s = 0; s < count; ++s)
