@@ -88,10 +88,7 @@ parseList (const char* text)
   }
   return v;
 }
-} // namespace
-
-int
-main (int argc, char** argv)
+struct Options
 {
   std::string dir = "../shared/data/meshes";
   std::vector<double> counts = {5000, 50000}, noises = {0.0, 0.0025, 0.005};
@@ -99,48 +96,145 @@ main (int argc, char** argv)
   bool verbose = false;
   pcl_flowseg::Denoising denoising = pcl_flowseg::Denoising::Automatic;
   int smooth_k = 0, smooth_iter = 1;
+};
+
+bool
+parseOptions (int argc, char** argv, Options& o)
+{
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if (a == "--meshes" && i + 1 < argc) dir = argv[++i];
-    else if (a == "--points" && i + 1 < argc) counts = parseList (argv[++i]);
-    else if (a == "--noise" && i + 1 < argc) noises = parseList (argv[++i]);
-    else if (a == "--only" && i + 1 < argc) only = argv[++i];
-    else if (a == "--verbose") verbose = true;
+    if (a == "--meshes" && i + 1 < argc) o.dir = argv[++i];
+    else if (a == "--points" && i + 1 < argc) o.counts = parseList (argv[++i]);
+    else if (a == "--noise" && i + 1 < argc) o.noises = parseList (argv[++i]);
+    else if (a == "--only" && i + 1 < argc) o.only = argv[++i];
+    else if (a == "--verbose") o.verbose = true;
     else if (a == "--denoise" && i + 1 < argc)
     {
       const std::string m = argv[++i];
-      denoising = m == "off" ? pcl_flowseg::Denoising::Off : m == "on" ? pcl_flowseg::Denoising::Always : pcl_flowseg::Denoising::Automatic;
+      o.denoising = m == "off" ? pcl_flowseg::Denoising::Off : m == "on" ? pcl_flowseg::Denoising::Always : pcl_flowseg::Denoising::Automatic;
     }
-    else if (a == "--smooth" && i + 2 < argc) { smooth_k = std::atoi (argv[++i]); smooth_iter = std::atoi (argv[++i]); }
+    else if (a == "--smooth" && i + 2 < argc) { o.smooth_k = std::atoi (argv[++i]); o.smooth_iter = std::atoi (argv[++i]); }
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_interior [--meshes DIR] [--points 5000,50000] [--noise 0,0.0025,0.005] [--only NAME]\n"
                             "                              [--denoise auto|off|on] [--verbose]\n"
                             "  noise: standard deviation as a fraction of the bounding-box diagonal\n");
-      return 2;
+      return false;
     }
   }
-  const auto meshes = meshesIn (dir);
+  return true;
+}
+
+struct Summary { double worst = 1.0, sum = 0.0; int runs = 0, closed = 0, manifold = 0; };
+struct PivotRow { std::string mesh; std::vector<std::string> cells; };
+
+/** One run: \a count points with noise \a noise (share of the diagonal) on \a mesh, its row printed,
+  * its agreement added to \a pivot and \a summary. */
+void
+evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, const pcl_flowseg::MeshInsideTest& truth,
+             double count, double noise, bool first_noise, const Options& o, PivotRow& pivot, Summary& summary)
+{
+  auto pts = pcl_flowseg::sampleMeshSurface (mesh, static_cast<std::size_t> (count), noise * mesh.diagonal (), 1);
+  if (o.smooth_k > 0)
+    pts = smooth (pts, o.smooth_k, o.smooth_iter);
+  pcl_flowseg::FlowParameters params;
+  params.preparation.dimension = pcl_flowseg::DimensionMode::Spatial;
+  params.interior.denoising = o.denoising;
+  pcl_flowseg::FlowResult r;
+  const auto status = pcl_flowseg::runFlowSegmentation (pts, params, r);
+  if (!status)
+  {
+    std::printf ("| %s | %.0f | %.2f%% | failed: %s | | | | | |\n", name.c_str (), count, 100 * noise, status.message.c_str ());
+    return;
+  }
+  double agree = 0.0, total = 0.0, labelled_in = 0.0, truly_in = 0.0;
+  for (const auto& c : r.cells)
+  {
+    total += c.volume;
+    const bool t = truth.inside (c.centroid);
+    if ((c.inside == 1) == t)
+      agree += c.volume;
+    labelled_in += c.inside == 1 ? c.volume : 0.0;
+    truly_in += t ? c.volume : 0.0;
+  }
+  if (o.verbose)
+    std::fprintf (stderr, "%s: labelled inside %.4f of the hull volume, truly inside %.4f\n", name.c_str (), labelled_in / total,
+                  truly_in / total);
+  const double share = total > 0 ? agree / total : 0.0;
+  const auto& in = r.interior;
+  std::printf ("| %s | %.0f | %.2f%% | %.4f%% | %s | %s | %zu / %zu | %.1f | %.1f |\n", name.c_str (), count, 100 * noise,
+               100 * share, in.closed ? "yes" : "no", in.manifold ? "yes" : "no", in.nonmanifold_edges, in.nonmanifold_vertices,
+               r.timings.interior_ms, r.timings.total_ms);
+  std::fflush (stdout);
+  char cell[64];
+  std::snprintf (cell, sizeof (cell), "%.2f%s", 100 * share, first_noise ? (in.manifold ? "" : (in.closed ? " c" : " open")) : "");
+  pivot.cells.push_back (cell);
+  summary.worst = std::min (summary.worst, share);
+  summary.sum += share;
+  ++summary.runs;
+  summary.closed += in.closed;
+  summary.manifold += in.manifold;
+}
+
+void
+printPivot (const std::vector<PivotRow>& pivot, const Options& o)
+{
+  std::printf ("\nAgreement in %% by points and noise (clean runs: \"c\" = boundary closed but not manifold):\n\n| mesh |");
+  for (double count : o.counts)
+    for (double noise : o.noises)
+      std::printf (" %.0fk, %.2f%% |", count / 1000, 100 * noise);
+  std::printf ("\n|---|");
+  for (std::size_t k = 0; k < o.counts.size () * o.noises.size (); ++k)
+    std::printf ("---|");
+  std::printf ("\n");
+  for (const auto& row : pivot)
+  {
+    std::printf ("| %s |", row.mesh.c_str ());
+    for (const auto& c : row.cells)
+      std::printf (" %s |", c.c_str ());
+    std::printf ("\n");
+  }
+}
+
+void
+printSummary (const std::vector<Summary>& by_run, const Options& o)
+{
+  std::printf ("\n| points | noise | runs | mean agreement | worst agreement | closed | manifold |\n|---|---|---|---|---|---|---|\n");
+  for (std::size_t ci = 0; ci < o.counts.size (); ++ci)
+    for (std::size_t k = 0; k < o.noises.size (); ++k)
+    {
+      const Summary& s = by_run[ci * o.noises.size () + k];
+      if (s.runs)
+        std::printf ("| %.0f | %.2f%% | %d | %.3f%% | %.3f%% | %d | %d |\n", o.counts[ci], 100 * o.noises[k], s.runs, 100 * s.sum / s.runs,
+                     100 * s.worst, s.closed, s.manifold);
+    }
+}
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  Options o;
+  if (!parseOptions (argc, argv, o))
+    return 2;
+  const auto meshes = meshesIn (o.dir);
   if (meshes.empty ())
   {
-    std::fprintf (stderr, "flowseg_bench_interior: no .off/.obj meshes in %s\n", dir.c_str ());
+    std::fprintf (stderr, "flowseg_bench_interior: no .off/.obj meshes in %s\n", o.dir.c_str ());
     return 1;
   }
   std::printf ("| mesh | points | noise | agreement | closed | manifold | non-manifold edges / vertices | interior ms | total ms |\n");
   std::printf ("|---|---|---|---|---|---|---|---|---|\n");
-  struct Summary { double worst = 1.0, sum = 0.0; int runs = 0, closed = 0, manifold = 0; };
-  struct PivotRow { std::string mesh; std::vector<std::string> cells; };
   std::vector<PivotRow> pivot;
-  std::vector<Summary> by_run (counts.size () * noises.size ());
+  std::vector<Summary> by_run (o.counts.size () * o.noises.size ());
   for (const auto& path : meshes)
   {
     const std::string name = path.substr (path.find_last_of ('/') + 1);
-    if (!only.empty () && name.find (only) == std::string::npos)
+    if (!o.only.empty () && name.find (o.only) == std::string::npos)
       continue;
     pcl_flowseg::TriangleMesh mesh;
-    const auto st = pcl_flowseg::loadTriangleMesh (path, mesh);
-    if (!st)
+    if (const auto st = pcl_flowseg::loadTriangleMesh (path, mesh); !st)
     {
       std::fprintf (stderr, "skip %s: %s\n", name.c_str (), st.message.c_str ());
       continue;
@@ -151,78 +245,12 @@ main (int argc, char** argv)
       std::fprintf (stderr, "skip %s: not a closed manifold mesh\n", name.c_str ());
       continue;
     }
-    const double diag = mesh.diagonal ();
     pivot.push_back (PivotRow{name, {}});
-    for (std::size_t ci = 0; ci < counts.size (); ++ci)
-      for (std::size_t k = 0; k < noises.size (); ++k)
-      {
-        const double count = counts[ci];
-        auto pts = pcl_flowseg::sampleMeshSurface (mesh, static_cast<std::size_t> (count), noises[k] * diag, 1);
-        if (smooth_k > 0)
-          pts = smooth (pts, smooth_k, smooth_iter);
-        pcl_flowseg::FlowParameters params;
-        params.preparation.dimension = pcl_flowseg::DimensionMode::Spatial;
-        params.interior.denoising = denoising;
-        pcl_flowseg::FlowResult r;
-        const auto status = pcl_flowseg::runFlowSegmentation (pts, params, r);
-        if (!status)
-        {
-          std::printf ("| %s | %.0f | %.2f%% | failed: %s | | | | | |\n", name.c_str (), count, 100 * noises[k], status.message.c_str ());
-          continue;
-        }
-        double agree = 0.0, total = 0.0, labelled_in = 0.0, truly_in = 0.0;
-        for (const auto& c : r.cells)
-        {
-          total += c.volume;
-          const bool t = truth.inside (c.centroid);
-          if ((c.inside == 1) == t)
-            agree += c.volume;
-          labelled_in += c.inside == 1 ? c.volume : 0.0;
-          truly_in += t ? c.volume : 0.0;
-        }
-        if (verbose)
-          std::fprintf (stderr, "%s: labelled inside %.4f of the hull volume, truly inside %.4f\n", name.c_str (),
-                        labelled_in / total, truly_in / total);
-        const double share = total > 0 ? agree / total : 0.0;
-        const auto& in = r.interior;
-        std::printf ("| %s | %.0f | %.2f%% | %.4f%% | %s | %s | %zu / %zu | %.1f | %.1f |\n", name.c_str (), count, 100 * noises[k],
-                     100 * share, in.closed ? "yes" : "no", in.manifold ? "yes" : "no", in.nonmanifold_edges,
-                     in.nonmanifold_vertices, r.timings.interior_ms, r.timings.total_ms);
-        std::fflush (stdout);
-        char cell[64];
-        std::snprintf (cell, sizeof (cell), "%.2f%s", 100 * share, k == 0 ? (in.manifold ? "" : (in.closed ? " c" : " open")) : "");
-        pivot.back ().cells.push_back (cell);
-        Summary& s = by_run[ci * noises.size () + k];
-        s.worst = std::min (s.worst, share);
-        s.sum += share;
-        ++s.runs;
-        s.closed += in.closed;
-        s.manifold += in.manifold;
-      }
+    for (std::size_t ci = 0; ci < o.counts.size (); ++ci)
+      for (std::size_t k = 0; k < o.noises.size (); ++k)
+        evaluateRun (name, mesh, truth, o.counts[ci], o.noises[k], k == 0, o, pivot.back (), by_run[ci * o.noises.size () + k]);
   }
-  std::printf ("\nAgreement in %% by points and noise (clean runs: \"c\" = boundary closed but not manifold):\n\n| mesh |");
-  for (double count : counts)
-    for (double noise : noises)
-      std::printf (" %.0fk, %.2f%% |", count / 1000, 100 * noise);
-  std::printf ("\n|---|");
-  for (std::size_t k = 0; k < counts.size () * noises.size (); ++k)
-    std::printf ("---|");
-  std::printf ("\n");
-  for (const auto& row : pivot)
-  {
-    std::printf ("| %s |", row.mesh.c_str ());
-    for (const auto& c : row.cells)
-      std::printf (" %s |", c.c_str ());
-    std::printf ("\n");
-  }
-  std::printf ("\n| points | noise | runs | mean agreement | worst agreement | closed | manifold |\n|---|---|---|---|---|---|---|\n");
-  for (std::size_t ci = 0; ci < counts.size (); ++ci)
-    for (std::size_t k = 0; k < noises.size (); ++k)
-    {
-      const Summary& s = by_run[ci * noises.size () + k];
-      if (s.runs)
-        std::printf ("| %.0f | %.2f%% | %d | %.3f%% | %.3f%% | %d | %d |\n", counts[ci], 100 * noises[k], s.runs, 100 * s.sum / s.runs,
-                     100 * s.worst, s.closed, s.manifold);
-    }
+  printPivot (pivot, o);
+  printSummary (by_run, o);
   return 0;
 }

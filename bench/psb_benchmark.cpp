@@ -598,6 +598,73 @@ writeCsv (const std::string& path, const std::vector<ModelResult>& results, cons
   });
 }
 
+/** The table's rows: categories in the order of the list, then all models, then the generated shapes. */
+std::vector<Row>
+tableRows (const std::vector<ModelResult>& results, const std::vector<GeneratedResult>& generated, const Options& o)
+{
+  std::vector<std::string> categories;
+  std::vector<const ModelResult*> evaluated;
+  for (const auto& r : results)
+    if (r.error.empty ())
+    {
+      evaluated.push_back (&r);
+      if (std::find (categories.begin (), categories.end (), r.model.category) == categories.end ())
+        categories.push_back (r.model.category);
+    }
+  std::vector<Row> rows;
+  for (const auto& category : categories)
+  {
+    std::vector<const ModelResult*> in;
+    for (const ModelResult* r : evaluated)
+      if (r->model.category == category)
+        in.push_back (r);
+    rows.push_back (summarise (category, in, o.rhos.size (), true));
+  }
+  rows.push_back (summarise ("**all**", evaluated, o.rhos.size (), true));
+  rows.push_back (summarise ("all, every face weighing 1 (PSB segEval)", evaluated, o.rhos.size (), false));
+  for (const auto& g : generated)
+    rows.push_back (generatedRow (g, o.rhos.size ()));
+  return rows;
+}
+
+/** The time line: flowseg, label transfer, SDF and the whole run since \a start. */
+void
+printTimes (const std::vector<ModelResult>& results, const Options& o, std::chrono::steady_clock::time_point start)
+{
+  std::size_t evaluated = 0;
+  for (const auto& r : results)
+    evaluated += r.error.empty ();
+  double flow_seconds = 0.0, sdf_seconds = 0.0, transfer_seconds = 0.0;
+  for (const auto& r : results)
+  {
+    for (const auto& m : r.flow)
+      flow_seconds += m.seconds;
+    sdf_seconds += r.sdf.seconds;
+    transfer_seconds += r.transfer_seconds;
+  }
+  std::printf ("\nTime: flowseg %.1f s (%zu runs of %zu points), label transfer %.1f s, CGAL SDF %.1f s, whole run %.1f s\n",
+               flow_seconds, evaluated * o.rhos.size (), o.points, transfer_seconds, sdf_seconds, secondsSince (start));
+
+}
+
+/** Prints every failure; \return how many models failed. */
+int
+reportFailures (const std::vector<ModelResult>& results, const Options& o)
+{
+  int failures = 0;
+  for (const auto& r : results)
+  {
+    if (!r.error.empty ())
+      ++failures, std::printf ("failed: model %s: %s\n", r.model.id.c_str (), r.error.c_str ());
+    for (std::size_t k = 0; k < r.flow.size (); ++k)
+      if (!r.flow[k].error.empty ())
+        std::printf ("failed: model %s: flowseg rho %g: %s\n", r.model.id.c_str (), o.rhos[k], r.flow[k].error.c_str ());
+    if (!r.sdf.error.empty ())
+      std::printf ("failed: model %s: SDF: %s\n", r.model.id.c_str (), r.sdf.error.c_str ());
+  }
+  return failures;
+}
+
 } // namespace
 
 int
@@ -655,57 +722,15 @@ main (int argc, char** argv)
       generated.push_back (evaluateGenerated (shape, o));
     }
 
-  // Table: categories in the order of the list, then all models, then the generated shapes.
-  std::vector<std::string> categories;
-  std::vector<const ModelResult*> evaluated;
-  for (const auto& r : results)
-    if (r.error.empty ())
-    {
-      evaluated.push_back (&r);
-      if (std::find (categories.begin (), categories.end (), r.model.category) == categories.end ())
-        categories.push_back (r.model.category);
-    }
-  std::vector<Row> rows;
-  for (const auto& category : categories)
-  {
-    std::vector<const ModelResult*> in;
-    for (const ModelResult* r : evaluated)
-      if (r->model.category == category)
-        in.push_back (r);
-    rows.push_back (summarise (category, in, o.rhos.size (), true));
-  }
-  rows.push_back (summarise ("**all**", evaluated, o.rhos.size (), true));
-  rows.push_back (summarise ("all, every face weighing 1 (PSB segEval)", evaluated, o.rhos.size (), false));
-  for (const auto& g : generated)
-    rows.push_back (generatedRow (g, o.rhos.size ()));
+  const std::vector<Row> rows = tableRows (results, generated, o);
   printTable (rows, o);
   std::printf ("\nErrors: 1 - Rand index, faces weighted by area (pairs i < j, weight area_i * area_j), mean over the\n"
                "model's human segmentations, then over the models. Generated shapes: %zu points, every point weighing 1,\n"
                "against their parts. segs: distinct face (point) labels. *: some models missing (failed) in that cell.\n",
                kGeneratedPoints);
 
-  double flow_seconds = 0.0, sdf_seconds = 0.0, transfer_seconds = 0.0;
-  for (const auto& r : results)
-  {
-    for (const auto& m : r.flow)
-      flow_seconds += m.seconds;
-    sdf_seconds += r.sdf.seconds;
-    transfer_seconds += r.transfer_seconds;
-  }
-  std::printf ("\nTime: flowseg %.1f s (%zu runs of %zu points), label transfer %.1f s, CGAL SDF %.1f s, whole run %.1f s\n",
-               flow_seconds, evaluated.size () * o.rhos.size (), o.points, transfer_seconds, sdf_seconds, secondsSince (start));
-
-  int failures = 0;
-  for (const auto& r : results)
-  {
-    if (!r.error.empty ())
-      ++failures, std::printf ("failed: model %s: %s\n", r.model.id.c_str (), r.error.c_str ());
-    for (std::size_t k = 0; k < r.flow.size (); ++k)
-      if (!r.flow[k].error.empty ())
-        std::printf ("failed: model %s: flowseg rho %g: %s\n", r.model.id.c_str (), o.rhos[k], r.flow[k].error.c_str ());
-    if (!r.sdf.error.empty ())
-      std::printf ("failed: model %s: SDF: %s\n", r.model.id.c_str (), r.sdf.error.c_str ());
-  }
+  printTimes (results, o, start);
+  const int failures = reportFailures (results, o);
   if (!o.csv.empty ())
   {
     if (const Status st = writeCsv (o.csv, results, generated, o); !st)
