@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -126,6 +127,9 @@ add (const OptionParser& p, const std::vector<std::string>& args, const Options&
 {
   if (args.size () < 3)
     return p.usageError ("add needs DB and at least one FILE");
+  if (std::ifstream (args[1]).good ()) // a damaged database fails now, not after the signatures
+    if (const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase ().load (args[1]); !s)
+      return p.failure (s.message);
   const std::vector<std::string> files (args.begin () + 2, args.end ());
   std::vector<pcl_flowseg::ShapeEntry> entries;
   if (!computeEntries ("", files, o, o.label, entries))
