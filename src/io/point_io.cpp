@@ -243,8 +243,11 @@ pcdPointBytes (const std::string& path, PcdHeader& h, long long& point_bytes)
   {
     const std::string& size = h.sizes[k];
     const std::string& type = h.types[k];
-    if ((size != "1" && size != "2" && size != "4" && size != "8") || (type != "I" && type != "U" && type != "F"))
-      return Status::error (path + ": malformed PCD header (field '" + h.fields[k] + "' has an invalid SIZE/TYPE)");
+    // Floats are 4 or 8 bytes: PCL's reader has no type for the others and crashes on them.
+    if ((size != "1" && size != "2" && size != "4" && size != "8") || (type != "I" && type != "U" && type != "F") ||
+        (type == "F" && size != "4" && size != "8"))
+      return Status::error (path + ": malformed PCD header (field '" + h.fields[k] + "' has an invalid SIZE/TYPE " + size +
+                            "/" + type + ")");
     long long count = 1;
     if (!h.counts.empty ())
     {
