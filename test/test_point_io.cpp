@@ -273,7 +273,8 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
   const std::string dir = std::string (PCL_FLOWSEG_SOURCE_DIR) + "/test/data/fuzz_regressions/";
   std::size_t checked = 0;
   for (const char* name : {"mesh_ply_header_27fc9764.ply", "pgm_huge_width_dcafbfbf.pgm", "mesh_ply_negative_count.ply",
-                           "point_pcd_size_type.pcd", "point_pcd_float_size2_c82b59f5.pcd"})
+                           "point_pcd_size_type.pcd", "point_pcd_float_size2_c82b59f5.pcd",
+                           "mesh_ply_vertex_list_c916fd58.ply", "point_pcd_height0_ed412c7f.pcd"})
   {
     const std::string path = dir + name;
     std::vector<Eigen::Vector3d> pts;
@@ -285,7 +286,7 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
     EXPECT_FALSE (loadTriangleMesh (path, mesh).ok && loadGreyImage (path, image).ok);
     ++checked;
   }
-  EXPECT_EQ (checked, 5u);
+  EXPECT_EQ (checked, 7u);
   // The causes, named: a negative element count is refused before PCL allocates for it, and a
   // PCD float field of 2 bytes before PCL's reader (which crashed on one) or ours sees it.
   std::vector<Eigen::Vector3d> pts;
@@ -298,6 +299,15 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
     EXPECT_FALSE (pcd.ok);
     EXPECT_NE (pcd.message.find ("invalid SIZE/TYPE 2/F"), std::string::npos) << pcd.message;
   }
+  // PCL's PLY reader stops on an assertion for a list in the vertex element, its PCD reader
+  // misreads a file of no points: both are refused first.
+  TempDir tmp;
+  std::ofstream (tmp.file ("list.ply")) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                           "property list uchar int vertex_indices\nend_header\n0 0 1 0\n1 0 1 1\n0 1 1 2\n";
+  const Status list = loadShapeSample (tmp.file ("list.ply"), ShapeInputOptions (), pts);
+  EXPECT_NE (list.message.find ("a list property of the vertex element"), std::string::npos) << list.message;
+  const Status none = loadPointCloud (dir + "point_pcd_height0_ed412c7f.pcd", cloud);
+  EXPECT_NE (none.message.find ("holds no points"), std::string::npos) << none.message;
   // A database with an absurd weight (a query on it once died with SIGSEGV) is refused at its line.
   SignatureDatabase db;
   const Status loaded = db.load (dir + "database_absurd_weight.db");

@@ -20,6 +20,7 @@ constexpr unsigned long long kLargestCount = 1ULL << 40;
 
 struct Element
 {
+  std::string name;
   unsigned long long count = 0;
   unsigned long long properties = 0;
 };
@@ -58,15 +59,15 @@ checkPlyHeader (const std::string& path)
     if (!line.empty () && line.back () == '\r')
       line.pop_back ();
     std::istringstream words (line);
-    std::string keyword, name, count;
+    std::string keyword, count;
     words >> keyword;
     if (keyword == "end_header")
       break;
     if (keyword == "element")
     {
       Element e;
-      if (!(words >> name >> count) || !parseCount (count, e.count))
-        return where (path, number, "element '" + name + "' with a count that is not a whole number from 0 to 2^40: '" +
+      if (!(words >> e.name >> count) || !parseCount (count, e.count))
+        return where (path, number, "element '" + e.name + "' with a count that is not a whole number from 0 to 2^40: '" +
                                         count + "'");
       elements.push_back (e);
     }
@@ -74,8 +75,15 @@ checkPlyHeader (const std::string& path)
     {
       if (elements.empty ())
         return where (path, number, "property before any element");
+      std::string kind;
+      words >> kind;
+      // PCL's reader takes lists only as faces' vertex indices; elsewhere it asserts.
+      if (kind == "list" && elements.back ().name == "vertex")
+        return where (path, number, "a list property of the vertex element");
       ++elements.back ().properties;
     }
+    else if (keyword != "format" && keyword != "comment" && keyword != "obj_info")
+      return where (path, number, "not a PLY header line: '" + line.substr (0, 40) + "'");
   }
   const std::streamoff body_start = in.tellg ();
   in.seekg (0, std::ios::end);

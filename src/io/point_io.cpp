@@ -238,6 +238,8 @@ pcdPointBytes (const std::string& path, PcdHeader& h, long long& point_bytes)
     h.points = h.width >= 0 ? h.width * h.height : -1;
   if (h.points < 0 || h.points > 2000000000LL || (h.width >= 0 && h.width * h.height != h.points))
     return Status::error (path + ": malformed PCD header (WIDTH x HEIGHT and POINTS disagree or are missing)");
+  if (h.points == 0) // PCL's reader misreads such files (a huge allocation after "No points to read")
+    return Status::error (path + ": the PCD file holds no points");
   point_bytes = 0;
   for (std::size_t k = 0; k < h.fields.size (); ++k)
   {
