@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -180,6 +181,7 @@ readPcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
 {
   std::string line;
   std::size_t number = 0;
+  std::set<std::string> seen;
   while (h.data.empty () && std::getline (in, line))
   {
     if (++number > 64 || line.size () > 4096)
@@ -200,6 +202,10 @@ readPcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
       return values.size () == 1 && *end == '\0' && out >= 0 ? Status::success ()
                                                              : Status::error (where (path, number) + "invalid " + what);
     };
+    // PCL acts on the first of two equal keywords where this check would take the last
+    // ("POINTS 0" then "POINTS 4" crashed its reader): each may appear once.
+    if (!seen.insert (key).second)
+      return Status::error (where (path, number) + "'" + key.substr (0, 40) + "' appears twice in the header");
     Status ok;
     if (key == "VERSION" || key == "VIEWPOINT")
       continue;
