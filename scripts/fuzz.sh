@@ -3,13 +3,15 @@
 # each for a bounded time on a copy of its corpus (fuzz/corpus/TARGET). Crashing inputs are kept
 # in build-fuzz/crashes/TARGET. Usage: bash scripts/fuzz.sh [SECONDS_PER_TARGET (60) [TARGET...]]
 # (targets: point_file mesh_file image database database_update segmentation; default all).
+# SECONDS 0 replays the kept corpus once, without mutating it: what CI runs, so that the targets
+# keep building and what the corpus reaches stays fixed without making CI depend on luck.
 # Installs clang with apt-get when it is missing.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift $(( $# > 0 ? 1 : 0 ))
 targets=${*:-point_file mesh_file image database database_update segmentation}
-build=build-fuzz
+build=${FUZZ_BUILD:-build-fuzz}
 if ! command -v clang++ >/dev/null 2>&1; then
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
   $SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends clang >/dev/null \
@@ -26,7 +28,8 @@ for target in $targets; do
   mkdir -p "$corpus" "$crashes"
   cp -n fuzz/corpus/$target/* "$corpus/" 2>/dev/null
   log="$build/$target.log"
-  ASAN_OPTIONS=detect_leaks=0 "$build/fuzz/fuzz_$target" "$corpus" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 \
+  if [ "$seconds" -eq 0 ]; then corpus=fuzz/corpus/$target limit=(-runs=0); else limit=(-max_total_time="$seconds"); fi
+  ASAN_OPTIONS=detect_leaks=0 "$build/fuzz/fuzz_$target" "$corpus" "${limit[@]}" -timeout=20 -rss_limit_mb=4096 \
     -artifact_prefix="$crashes/" -print_final_stats=1 >"$log" 2>&1
   rc=$?
   runs=$(grep -m1 'stat::number_of_executed_units' "$log" | awk '{print $2}')
