@@ -275,7 +275,7 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
   for (const char* name : {"mesh_ply_header_27fc9764.ply", "pgm_huge_width_dcafbfbf.pgm", "mesh_ply_negative_count.ply",
                            "point_pcd_size_type.pcd", "point_pcd_float_size2_c82b59f5.pcd",
                            "mesh_ply_vertex_list_c916fd58.ply", "point_pcd_height0_ed412c7f.pcd",
-                           "point_pcd_points_twice_c9647db9.pcd"})
+                           "point_pcd_points_twice_c9647db9.pcd", "point_pcd_huge_height_437fadd9.pcd"})
   {
     const std::string path = dir + name;
     std::vector<Eigen::Vector3d> pts;
@@ -287,7 +287,7 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
     EXPECT_FALSE (loadTriangleMesh (path, mesh).ok && loadGreyImage (path, image).ok);
     ++checked;
   }
-  EXPECT_EQ (checked, 8u);
+  EXPECT_EQ (checked, 9u);
   // The causes, named: a negative element count is refused before PCL allocates for it, and a
   // PCD float field of 2 bytes before PCL's reader (which crashed on one) or ours sees it.
   std::vector<Eigen::Vector3d> pts;
@@ -311,6 +311,8 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
   EXPECT_NE (none.message.find ("holds no points"), std::string::npos) << none.message;
   const Status twice = loadPointCloud (dir + "point_pcd_points_twice_c9647db9.pcd", cloud);
   EXPECT_NE (twice.message.find (":13: 'POINTS' appears twice"), std::string::npos) << twice.message;
+  const Status tall = loadPointCloud (dir + "point_pcd_huge_height_437fadd9.pcd", cloud);
+  EXPECT_NE (tall.message.find (":8: invalid HEIGHT"), std::string::npos) << tall.message;
   // A database with an absurd weight (a query on it once died with SIGSEGV) is refused at its line.
   SignatureDatabase db;
   const Status loaded = db.load (dir + "database_absurd_weight.db");

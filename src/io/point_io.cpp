@@ -199,8 +199,10 @@ readPcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
     auto integer = [&] (long long& out, const char* what) {
       char* end = nullptr;
       out = values.size () == 1 ? std::strtoll (values[0].c_str (), &end, 10) : -1;
-      return values.size () == 1 && *end == '\0' && out >= 0 ? Status::success ()
-                                                             : Status::error (where (path, number) + "invalid " + what);
+      // At most 2e9 each, so that WIDTH x HEIGHT cannot overflow.
+      return values.size () == 1 && *end == '\0' && out >= 0 && out <= 2000000000LL
+                 ? Status::success ()
+                 : Status::error (where (path, number) + "invalid " + what);
     };
     // PCL acts on the first of two equal keywords where this check would take the last
     // ("POINTS 0" then "POINTS 4" crashed its reader): each may appear once.
