@@ -276,7 +276,7 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
                            "point_pcd_size_type.pcd", "point_pcd_float_size2_c82b59f5.pcd",
                            "mesh_ply_vertex_list_c916fd58.ply", "point_pcd_height0_ed412c7f.pcd",
                            "point_pcd_points_twice_c9647db9.pcd", "point_pcd_huge_height_437fadd9.pcd",
-                           "point_pcd_control_bytes_header.pcd"})
+                           "point_pcd_control_bytes_header.pcd", "point_pcd_no_points_line.pcd"})
   {
     const std::string path = dir + name;
     std::vector<Eigen::Vector3d> pts;
@@ -288,7 +288,7 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
     EXPECT_FALSE (loadTriangleMesh (path, mesh).ok && loadGreyImage (path, image).ok);
     ++checked;
   }
-  EXPECT_EQ (checked, 10u);
+  EXPECT_EQ (checked, 11u);
   // The causes, named: a negative element count is refused before PCL allocates for it, and a
   // PCD float field of 2 bytes before PCL's reader (which crashed on one) or ours sees it.
   std::vector<Eigen::Vector3d> pts;
@@ -309,12 +309,20 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
                                            "property list uchar int vertex_indices\nend_header\n0 0 1 0\n1 0 1 1\n0 1 1 2\n";
   const Status list = loadShapeSample (tmp.file ("list.ply"), ShapeInputOptions (), pts);
   EXPECT_NE (list.message.find ("a list property of the vertex element"), std::string::npos) << list.message;
-  const Status none = loadPointCloud (dir + "point_pcd_height0_ed412c7f.pcd", cloud);
+  std::ofstream (tmp.file ("height0.pcd")) << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\n"
+                                              "HEIGHT 0\nPOINTS 0\nDATA ascii\n"; // as the fuzzer's, without its bad VIEWPOINT
+  const Status none = loadPointCloud (tmp.file ("height0.pcd"), cloud);
   EXPECT_NE (none.message.find ("holds no points"), std::string::npos) << none.message;
   std::ofstream (tmp.file ("twice.pcd")) << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\n"
                                              "HEIGHT 1\nPOINTS  0\nPOINTS 4\nDATA ascii\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
   const Status twice = loadPointCloud (tmp.file ("twice.pcd"), cloud); // the fuzzer's file also has control bytes
   EXPECT_NE (twice.message.find (":9: 'POINTS' appears twice"), std::string::npos) << twice.message;
+  const Status lost = loadPointCloud (dir + "point_pcd_no_points_line.pcd", cloud); // POINTS ran into VIEWPOINT
+  EXPECT_NE (lost.message.find (":9: VIEWPOINT needs 7 numbers"), std::string::npos) << lost.message;
+  std::ofstream (tmp.file ("nopoints.pcd")) << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\n"
+                                               "HEIGHT 1\nDATA ascii\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const Status missing = loadPointCloud (tmp.file ("nopoints.pcd"), cloud);
+  EXPECT_NE (missing.message.find ("WIDTH or POINTS missing"), std::string::npos) << missing.message;
   const Status tall = loadPointCloud (dir + "point_pcd_huge_height_437fadd9.pcd", cloud);
   EXPECT_NE (tall.message.find (":8: invalid HEIGHT"), std::string::npos) << tall.message;
   // A database with an absurd weight (a query on it once died with SIGSEGV) is refused at its line.

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <cmath>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -213,6 +214,11 @@ readPcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
     if (!seen.insert (key).second)
       return Status::error (where (path, number) + "'" + key.substr (0, 40) + "' appears twice in the header");
     Status ok;
+    if (key == "VIEWPOINT" && (values.size () != 7 || !std::all_of (values.begin (), values.end (), [] (const std::string& v) {
+                                 char* end = nullptr;
+                                 return std::isfinite (std::strtod (v.c_str (), &end)) && *end == '\0';
+                               })))
+      return Status::error (where (path, number) + "VIEWPOINT needs 7 numbers");
     if (key == "VERSION" || key == "VIEWPOINT")
       continue;
     else if (key == "FIELDS") h.fields = values;
@@ -246,8 +252,8 @@ pcdPointBytes (const std::string& path, PcdHeader& h, long long& point_bytes)
   if (h.fields.empty () || h.sizes.size () != h.fields.size () || h.types.size () != h.fields.size () ||
       (!h.counts.empty () && h.counts.size () != h.fields.size ()))
     return Status::error (path + ": malformed PCD header (FIELDS, SIZE, TYPE, COUNT disagree)");
-  if (h.points < 0)
-    h.points = h.width >= 0 ? h.width * h.height : -1;
+  if (h.points < 0 || h.width < 0) // PCL's reader reads "no points" without them, then crashes
+    return Status::error (path + ": malformed PCD header (WIDTH or POINTS missing)");
   if (h.points < 0 || h.points > 2000000000LL || (h.width >= 0 && h.width * h.height != h.points))
     return Status::error (path + ": malformed PCD header (WIDTH x HEIGHT and POINTS disagree or are missing)");
   if (h.points == 0) // PCL's reader misreads such files (a huge allocation after "No points to read")
