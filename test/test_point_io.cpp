@@ -276,7 +276,8 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
                            "point_pcd_size_type.pcd", "point_pcd_float_size2_c82b59f5.pcd",
                            "mesh_ply_vertex_list_c916fd58.ply", "point_pcd_height0_ed412c7f.pcd",
                            "point_pcd_points_twice_c9647db9.pcd", "point_pcd_huge_height_437fadd9.pcd",
-                           "point_pcd_control_bytes_header.pcd", "point_pcd_no_points_line.pcd"})
+                           "point_pcd_control_bytes_header.pcd", "point_pcd_no_points_line.pcd",
+                           "point_pcd_non_ascii_comment.pcd"})
   {
     const std::string path = dir + name;
     std::vector<Eigen::Vector3d> pts;
@@ -288,7 +289,7 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
     EXPECT_FALSE (loadTriangleMesh (path, mesh).ok && loadGreyImage (path, image).ok);
     ++checked;
   }
-  EXPECT_EQ (checked, 11u);
+  EXPECT_EQ (checked, 12u);
   // The causes, named: a negative element count is refused before PCL allocates for it, and a
   // PCD float field of 2 bytes before PCL's reader (which crashed on one) or ours sees it.
   std::vector<Eigen::Vector3d> pts;
@@ -297,7 +298,8 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
   pcl::PointCloud<pcl::PointXYZ> cloud;
   const Status pcd = loadPointCloud (dir + "point_pcd_size_type.pcd", cloud);
   EXPECT_NE (pcd.message.find ("invalid SIZE/TYPE 2/F"), std::string::npos) << pcd.message;
-  for (const char* name : {"point_pcd_float_size2_c82b59f5.pcd", "point_pcd_control_bytes_header.pcd"})
+  for (const char* name : {"point_pcd_float_size2_c82b59f5.pcd", "point_pcd_control_bytes_header.pcd",
+                           "point_pcd_non_ascii_comment.pcd"})
   {
     const Status garbled = loadPointCloud (dir + name, cloud); // PCL misread their headers
     EXPECT_NE (garbled.message.find ("control characters in the PCD header"), std::string::npos) << garbled.message;

@@ -189,10 +189,10 @@ readPcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
       break;
     if (!line.empty () && line.back () == '\r')
       line.pop_back ();
-    // PCL splits header lines differently where control bytes appear (it read "no points" from
-    // one such header, then crashed): a header is text, comments included.
-    if (std::any_of (line.begin (), line.end (), [] (char c) { return (c >= 0 && c < 0x20 && c != '\t') || c == 0x7f; }))
-      return Status::error (where (path, number) + "control characters in the PCD header");
+    // PCL splits header lines differently where control or non-ASCII bytes appear (it read "no
+    // points" from such headers, then crashed): a header is ASCII text, comments included.
+    if (std::any_of (line.begin (), line.end (), [] (char c) { return (c < 0x20 && c != '\t') || c == 0x7f; }))
+      return Status::error (where (path, number) + "control characters in the PCD header (it must be ASCII text)");
     if (line.empty () || line[0] == '#')
       continue;
     std::istringstream words (line);
