@@ -277,7 +277,7 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
                            "mesh_ply_vertex_list_c916fd58.ply", "point_pcd_height0_ed412c7f.pcd",
                            "point_pcd_points_twice_c9647db9.pcd", "point_pcd_huge_height_437fadd9.pcd",
                            "point_pcd_control_bytes_header.pcd", "point_pcd_no_points_line.pcd",
-                           "point_pcd_non_ascii_comment.pcd"})
+                           "point_pcd_non_ascii_comment.pcd", "point_pcd_version_twice.pcd"})
   {
     const std::string path = dir + name;
     std::vector<Eigen::Vector3d> pts;
@@ -289,7 +289,7 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
     EXPECT_FALSE (loadTriangleMesh (path, mesh).ok && loadGreyImage (path, image).ok);
     ++checked;
   }
-  EXPECT_EQ (checked, 12u);
+  EXPECT_EQ (checked, 13u);
   // The causes, named: a negative element count is refused before PCL allocates for it, and a
   // PCD float field of 2 bytes before PCL's reader (which crashed on one) or ours sees it.
   std::vector<Eigen::Vector3d> pts;
@@ -325,6 +325,8 @@ TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)
                                                "HEIGHT 1\nDATA ascii\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
   const Status missing = loadPointCloud (tmp.file ("nopoints.pcd"), cloud);
   EXPECT_NE (missing.message.find ("WIDTH or POINTS missing"), std::string::npos) << missing.message;
+  const Status version = loadPointCloud (dir + "point_pcd_version_twice.pcd", cloud);
+  EXPECT_NE (version.message.find (":2: VERSION must be one of"), std::string::npos) << version.message;
   const Status tall = loadPointCloud (dir + "point_pcd_huge_height_437fadd9.pcd", cloud);
   EXPECT_NE (tall.message.find (":8: invalid HEIGHT"), std::string::npos) << tall.message;
   // A database with an absurd weight (a query on it once died with SIGSEGV) is refused at its line.

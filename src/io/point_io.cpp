@@ -219,6 +219,9 @@ readPcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
                                  return std::isfinite (std::strtod (v.c_str (), &end)) && *end == '\0';
                                })))
       return Status::error (where (path, number) + "VIEWPOINT needs 7 numbers");
+    if (key == "VERSION" && (values.size () != 1 || (values[0] != "0.7" && values[0] != ".7" && values[0] != "0.6" &&
+                                                      values[0] != ".6" && values[0] != "0.5" && values[0] != ".5")))
+      return Status::error (where (path, number) + "VERSION must be one of 0.5, 0.6, 0.7");
     if (key == "VERSION" || key == "VIEWPOINT")
       continue;
     else if (key == "FIELDS") h.fields = values;
