@@ -23,7 +23,7 @@ using flowseg_app::OptionParser;
 
 struct Options
 {
-  std::size_t k = 10;
+  std::size_t k = pcl_flowseg::kDefaultQueryResults;
   std::size_t candidates = pcl_flowseg::kDefaultCandidates;
   std::string label;
   pcl_flowseg::FlowParameters params;
@@ -39,6 +39,7 @@ makeParser (Options& o)
   OptionParser p ("flowseg_db",
                   "flowseg_db build DB ROOT [options]    signatures of every shape file below ROOT (class = folder)\n"
                   "       flowseg_db add DB FILE... [options]   add or replace shapes (the others are kept as they are)\n"
+                  "       flowseg_db merge DB SHARD...          add every shape of other databases, in order\n"
                   "       flowseg_db query DB FILE [options]    the most similar stored shapes\n"
                   "       flowseg_db list DB                    the stored shapes",
                   "Shape files: .pcd .ply .xyz .txt .csv (points), .off .obj .ply meshes (sampled on their faces)\n"
@@ -143,6 +144,29 @@ add (const OptionParser& p, const std::vector<std::string>& args, const Options&
   return s ? flowseg_app::kExitSuccess : p.failure (s.message);
 }
 
+/** Adds every shape of the databases args[2...] to the database at args[1] in one locked
+  * transaction. The shards are read and checked first: a damaged one changes nothing. */
+int
+merge (const OptionParser& p, const std::vector<std::string>& args, std::size_t& stored)
+{
+  if (args.size () < 3)
+    return p.usageError ("merge needs DB and at least one SHARD");
+  std::vector<pcl_flowseg::SignatureDatabase> shards (args.size () - 2);
+  for (std::size_t i = 0; i < shards.size (); ++i)
+    if (const pcl_flowseg::Status s = shards[i].load (args[i + 2]); !s)
+      return p.failure (s.message);
+  if (std::ifstream (args[1]).good ())
+    if (const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase ().load (args[1]); !s)
+      return p.failure (s.message);
+  const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase::update (args[1], [&] (pcl_flowseg::SignatureDatabase& db) {
+    for (const auto& shard : shards)
+      db.merge (shard);
+    stored = db.size ();
+    return pcl_flowseg::Status::success ();
+  });
+  return s ? flowseg_app::kExitSuccess : p.failure (s.message);
+}
+
 int
 query (const OptionParser& p, const std::vector<std::string>& args, const Options& o, pcl_flowseg::SignatureDatabase& db)
 {
@@ -206,10 +230,12 @@ main (int argc, char** argv)
       return parser.failure (s.message);
     return command == "list" ? list (parser, args, db) : query (parser, args, o, db);
   }
-  if (command != "build" && command != "add")
-    return parser.usageError ("unknown command '" + command + "' (build, add, query, list)");
+  if (command != "build" && command != "add" && command != "merge")
+    return parser.usageError ("unknown command '" + command + "' (build, add, merge, query, list)");
   std::size_t stored = 0;
-  const int status = command == "build" ? build (parser, args, o, stored) : add (parser, args, o, stored);
+  const int status = command == "build"   ? build (parser, args, o, stored)
+                     : command == "merge" ? merge (parser, args, stored)
+                                          : add (parser, args, o, stored);
   if (status == flowseg_app::kExitSuccess && !o.quiet)
     std::fprintf (stderr, "%s: %zu shapes\n", args[1].c_str (), stored);
   return status;

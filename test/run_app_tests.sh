@@ -171,6 +171,15 @@ expect "db query reports its time" 0 "aligned): " -- "$db" query "$work/shapes.d
 printf 'not a database\n' > "$work/foreign.db"
 expect "db foreign file" 1 "not a pcl_flowseg signature database" -- "$db" query "$work/foreign.db" "$work/tree/animal3d/animal3d-2.pcd"
 expect "db missing file" 1 "cannot open" -- "$db" list "$work/none.db"
+# shards of the collection, split in file order and merged in that order, give the same database
+(cd "$work/tree" && "$db" add "$work/shard_a.db" animal3d/*.pcd dumbbell3d/*.pcd -q && "$db" add "$work/shard_b.db" snowman3d/*.pcd -q)
+check "db add shards (names relative to the tree, as build makes them)" $?
+expect "db merge shards" 0 "9 shapes" -- "$db" merge "$work/merged.db" "$work/shard_a.db" "$work/shard_b.db"
+cmp -s "$work/merged.db" "$work/shapes3.db"; check "merged shards hold the same database as db build" $?
+expect "db merge again replaces, adds nothing" 0 "9 shapes" -- "$db" merge "$work/merged.db" "$work/shard_b.db"
+expect "db merge needs a shard" 2 "merge needs DB and at least one SHARD" -- "$db" merge "$work/merged.db"
+expect "db merge a missing shard" 1 "cannot open" -- "$db" merge "$work/merged.db" "$work/none.db"
+cmp -s "$work/merged.db" "$work/shapes3.db"; check "a failed merge leaves the database as it was" $?
 expect "db bad command" 2 "unknown command" -- "$db" frobnicate "$work/shapes.db"
 expect "db bad k" 2 "-k" -- "$db" query "$work/shapes.db" x.pcd -k -3
 
@@ -196,6 +205,8 @@ for bad in truncated absurd counts garbage; do
   expect "db list $bad database" 1 "$bad.db" -- "$db" list "$work/$bad.db"
   expect "db query $bad database" 1 "$bad.db" -- "$db" query "$work/$bad.db" "$src/samples/snowman3d.pcd"
   expect "db add to $bad database" 1 "$bad.db" -- "$db" add "$work/$bad.db" "$src/samples/snowman3d.pcd"
+  expect "db merge into $bad database" 1 "$bad.db" -- "$db" merge "$work/$bad.db" "$work/shard_b.db"
+  expect "db merge $bad database as a shard" 1 "$bad.db" -- "$db" merge "$work/merged.db" "$work/$bad.db"
   cmp -s "$work/$bad.db" "$work/$bad.before"; check "db add leaves the $bad database as it was" $?
   expect "match against $bad database as a shape" 1 "$bad.db" -- "$build/apps/flowseg_match" "$src/samples/snowman3d.pcd" "$work/$bad.db"
 done

@@ -64,7 +64,7 @@ addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
 void
 addThreadsOption (OptionParser& p, unsigned& threads)
 {
-  p.count ("-j, --threads", "N", "worker threads: 0 = all cores, 1 = sequential", threads, 0, 1024);
+  p.count ("-j, --threads", "N", "worker threads: 0 = all cores, 1 = sequential", threads, 0, pcl_flowseg::kMaxThreads);
   p.alias ("--jobs", "--threads");
 }
 

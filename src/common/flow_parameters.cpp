@@ -50,6 +50,8 @@ checkParameters (const FlowParameters& p)
     return Status::error ("the viewpoint has non-finite coordinates");
   if (p.features != FeatureSide::Interior && p.features != FeatureSide::Exterior && p.features != FeatureSide::Both)
     return Status::error ("features must be interior, exterior or both");
+  if (p.execution.threads > kMaxThreads)
+    return Status::error ("threads must be at most " + std::to_string (kMaxThreads) + ", got " + std::to_string (p.execution.threads));
   return Status::success ();
 }
 

@@ -186,6 +186,15 @@ SignatureDatabase::add (const ShapeEntry& entry)
   return true;
 }
 
+std::size_t
+SignatureDatabase::merge (const SignatureDatabase& shard)
+{
+  std::size_t added = 0;
+  for (const ShapeEntry& entry : shard.entries_)
+    added += add (entry) ? 1 : 0;
+  return added;
+}
+
 bool
 SignatureDatabase::contains (const std::string& name) const
 {
@@ -232,6 +241,13 @@ SignatureDatabase::candidateIndex () const
 std::vector<QueryHit>
 SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const
 {
+  return query (signature, k, matcher, candidates_);
+}
+
+std::vector<QueryHit>
+SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
+                          std::size_t candidates) const
+{
   const auto index = candidateIndex ();
   const auto& tree = index->trees[signature.dimension == 2 ? 0 : 1];
   const std::size_t stored = tree.entry.size ();
@@ -239,7 +255,7 @@ SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::
     return {};
   // Every stored shape of this dimension by summary distance: the nearest are the candidates. The
   // k-d tree answers exactly; only as many rows as are needed are asked for.
-  const std::size_t aligned = candidates_ == 0 ? stored : std::min (candidates_, stored);
+  const std::size_t aligned = candidates == 0 ? stored : std::min (candidates, stored);
   const std::size_t wanted = k == 0 ? stored : std::min (stored, std::max (k, aligned));
   auto summary = signatureSummary (signature);
   std::vector<int> rows (wanted);

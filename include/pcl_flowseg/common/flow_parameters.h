@@ -100,11 +100,14 @@ struct InteriorParameters
   std::optional<Eigen::Vector3d> viewpoint;
 };
 
+/** \brief Most worker threads a run may be given (ExecutionParameters::threads). */
+constexpr unsigned kMaxThreads = 1024;
+
 /** \brief Where and how much the run may compute. The result does not depend on it. */
 struct ExecutionParameters
 {
   /** Worker threads for the triangulation and the per-cell stages: 0 = all hardware threads,
-    * 1 = sequential. */
+    * 1 = sequential; at most kMaxThreads. */
   unsigned threads = 0;
   /** Memory the run may use, in bytes; 0 = what the system reports available. Inputs whose
     * estimated need exceeds it are refused before any work. */

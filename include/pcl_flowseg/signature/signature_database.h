@@ -38,6 +38,10 @@ struct QueryHit
   double summary_distance = 0.0; ///< distance between the two signatures' summaries
 };
 
+/** \brief Default number of results of a query (the k of SignatureDatabase::query in the apps and
+  * the Python module). */
+constexpr std::size_t kDefaultQueryResults = 10;
+
 /** \brief Default number of stored shapes aligned per query (SignatureDatabase::setCandidates). */
 constexpr std::size_t kDefaultCandidates = 24;
 
@@ -76,6 +80,10 @@ public:
 
   /** Adds a shape, replacing a stored one of the same name. \return true when it was new. */
   bool add (const ShapeEntry& entry);
+  /** \brief Adds every shape of \a shard, in its order, as add() does (a shape of the same name is
+    * replaced). Merging the shards of a collection split in file order, in that order, gives the
+    * database built from the whole collection at once. \return how many shapes were new. */
+  std::size_t merge (const SignatureDatabase& shard);
   bool contains (const std::string& name) const;
   const std::vector<ShapeEntry>& entries () const { return entries_; }
   std::size_t size () const { return entries_.size (); }
@@ -90,6 +98,10 @@ public:
     * by decreasing similarity; the other shapes follow by increasing summary distance (aligned =
     * false). Shapes of another dimension are skipped. Safe to call from several threads. */
   std::vector<QueryHit> query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const;
+  /** \brief As above with \a candidates in place of getCandidates(): for callers that share one
+    * database between threads asking with different candidate counts. */
+  std::vector<QueryHit> query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
+                               std::size_t candidates) const;
 
 private:
   Status saveLocked (const std::string& path) const;
