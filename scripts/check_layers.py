@@ -21,6 +21,8 @@ ALLOWED = {
     'segmentation': {'common', 'core'},
     'signature': {'common', 'segmentation', 'io'},
     'evaluation': {'common', 'segmentation', 'io', 'signature'},
+    # The Python module (python/src) binds the public library, never the core or the evaluation.
+    'python': {'common', 'segmentation', 'io', 'signature'},
 }
 PUBLIC_MAY_NOT = {'core'}
 
@@ -40,12 +42,14 @@ INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]')
 
 
 def layer_of_file(relative):
-    """The layer a project file belongs to, or None outside src/ and include/."""
+    """The layer a project file belongs to, or None outside src/, include/ and python/src/."""
     parts = relative.split(os.sep)
     if parts[0] == 'include' and len(parts) > 2 and parts[1] == 'pcl_flowseg':
         return parts[2] if parts[2] in ALLOWED else '?'
     if parts[0] == 'src' and len(parts) > 1:
         return parts[1] if parts[1] in ALLOWED else '?'
+    if parts[:2] == ['python', 'src']:
+        return 'python'
     return None
 
 
@@ -72,7 +76,7 @@ def check_core_step(relative, header):
 
 def check(root):
     problems = []
-    for top in ('src', 'include'):
+    for top in ('src', 'include', os.path.join('python', 'src')):
         for folder, _, files in os.walk(os.path.join(root, top)):
             for name in sorted(files):
                 if not name.endswith(('.h', '.hpp', '.cpp')):

@@ -8,6 +8,7 @@ PACKAGES=(
   build-essential cmake make pkg-config python3
   libpcl-dev libcgal-dev libflann-dev libeigen3-dev libboost-dev
   libgtest-dev libtbb-dev libpng-dev
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed
 )
 
 missing=()

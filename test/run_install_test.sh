@@ -32,4 +32,16 @@ fi
 if ldd "$lib" | grep -q libpcl_features; then
   echo "FAILED: libpcl_flowseg.so links pcl_features"; exit 1
 fi
+# The Python package, when built: importable from its install directory with no library path
+# (its RPATH finds libpcl_flowseg.so), segmenting a shipped sample.
+package=$(find "$work/prefix" -path '*dist-packages/pcl_flowseg/__init__.py' | head -1)
+if [ -f "$build/python/pcl_flowseg/__init__.py" ]; then
+  [ -n "$package" ] || { echo "FAILED: the Python package was built but not installed"; exit 1; }
+  PYTHONPATH=$(dirname "$(dirname "$package")") /usr/bin/python3 -c "
+import sys, pcl_flowseg as fs
+assert fs.__file__.startswith('$work/prefix'), fs.__file__
+seg = fs.segment(fs.read_points(sys.argv[1])[0])
+assert len(seg.features) > 0
+" "$src/samples/animal3d.pcd"
+fi
 echo "install: 1 passed, 0 failed"

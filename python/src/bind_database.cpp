@@ -1,0 +1,176 @@
+/*
+ * pcl_flowseg Python bindings - the signature database: open, add, merge, save, query.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "bindings.h"
+#include "python_values.h"
+
+#include <pcl_flowseg/signature/signature_database.h>
+
+#include <pybind11/stl.h>
+
+namespace pcl_flowseg_python {
+namespace {
+
+using pcl_flowseg::SignatureDatabase;
+
+/** A query hit with the stored shape's name and class. */
+struct Hit
+{
+  std::size_t index = 0;
+  std::string name, label;
+  double similarity = 0.0, score = 0.0, summary_distance = 0.0;
+  bool aligned = true;
+};
+
+pcl_flowseg::ShapeEntry
+makeEntry (const std::string& name, const std::string& label, const pcl_flowseg::Signature& signature)
+{
+  if (name.empty () || name.find ('\n') != std::string::npos)
+    throw py::value_error ("name: needs one non-empty line, got '" + name + "'");
+  if (label.find_first_of (" \t\n") != std::string::npos)
+    throw py::value_error ("label: needs one word without white space, got '" + label + "'");
+  raiseIfFailed (pcl_flowseg::checkSignature (signature));
+  return pcl_flowseg::ShapeEntry{name, label, signature};
+}
+
+SignatureDatabase
+open (const std::string& path)
+{
+  SignatureDatabase db;
+  pcl_flowseg::Status s;
+  {
+    py::gil_scoped_release release;
+    s = db.load (path);
+  }
+  raiseOsErrorIfFailed (s);
+  return db;
+}
+
+std::vector<Hit>
+query (const SignatureDatabase& db, const pcl_flowseg::Signature& signature, std::size_t k, std::size_t candidates,
+       const py::kwargs& kwargs)
+{
+  CallParameters unused;
+  pcl_flowseg::MatchParameters params;
+  applyKwargs (kwargs, kMatchArguments, unused, params);
+  raiseIfFailed (pcl_flowseg::checkSignature (signature));
+  pcl::SignatureMatcher matcher;
+  matcher.setParameters (params);
+  std::vector<pcl_flowseg::QueryHit> hits;
+  {
+    py::gil_scoped_release release;
+    hits = db.query (signature, k, matcher, candidates);
+  }
+  std::vector<Hit> out;
+  for (const auto& h : hits)
+  {
+    const auto& e = db.entries ()[h.entry];
+    out.push_back ({h.entry, e.name, e.label, h.similarity, h.score, h.summary_distance, h.aligned});
+  }
+  return out;
+}
+
+/** Adds \a shapes (name, label, signature) to the database file \a path in one locked transaction. */
+std::size_t
+addToFile (const std::string& path, const std::vector<std::tuple<std::string, std::string, pcl_flowseg::Signature>>& shapes,
+           double lock_wait)
+{
+  std::vector<pcl_flowseg::ShapeEntry> entries;
+  for (const auto& [name, label, signature] : shapes)
+    entries.push_back (makeEntry (name, label, signature));
+  std::size_t stored = 0;
+  pcl_flowseg::Status s;
+  {
+    py::gil_scoped_release release;
+    s = SignatureDatabase::update (path, [&] (SignatureDatabase& db) {
+      for (const auto& e : entries)
+        db.add (e);
+      stored = db.size ();
+      return pcl_flowseg::Status::success ();
+    }, lock_wait);
+  }
+  raiseOsErrorIfFailed (s);
+  return stored;
+}
+
+/** Merges the database files \a shards, in order, into the file \a path in one locked transaction. */
+std::size_t
+mergeFiles (const std::string& path, const std::vector<std::string>& shards, double lock_wait)
+{
+  std::vector<SignatureDatabase> loaded;
+  for (const auto& shard : shards)
+    loaded.push_back (open (shard));
+  std::size_t stored = 0;
+  pcl_flowseg::Status s;
+  {
+    py::gil_scoped_release release;
+    s = SignatureDatabase::update (path, [&] (SignatureDatabase& db) {
+      for (const auto& shard : loaded)
+        db.merge (shard);
+      stored = db.size ();
+      return pcl_flowseg::Status::success ();
+    }, lock_wait);
+  }
+  raiseOsErrorIfFailed (s);
+  return stored;
+}
+
+void
+bindHit (py::module_& m)
+{
+  py::class_<Hit> (m, "QueryHit", "One result of Database.query().")
+      .def_readonly ("index", &Hit::index, "Position of the shape in Database.entries().")
+      .def_readonly ("name", &Hit::name)
+      .def_readonly ("label", &Hit::label)
+      .def_readonly ("similarity", &Hit::similarity, "MatchResult.similarity (NaN when not aligned).")
+      .def_readonly ("score", &Hit::score)
+      .def_readonly ("aligned", &Hit::aligned, "False for shapes outside the candidates, ranked by summary distance only.")
+      .def_readonly ("summary_distance", &Hit::summary_distance)
+      .def ("__repr__", [] (const Hit& h) { return "<QueryHit " + h.label + " " + h.name + " similarity=" + std::to_string (h.similarity) + ">"; });
+}
+
+} // namespace
+
+void
+bindDatabase (py::module_& m)
+{
+  bindHit (m);
+  py::class_<SignatureDatabase> (m, "Database",
+                                 "Signatures of many shapes, kept in one text file (the format of flowseg_db).")
+      .def (py::init<> (), "An empty database.")
+      .def_static ("open", &open, py::arg ("path"), "Reads a database file; OSError when it is missing or damaged.")
+      .def ("add", [] (SignatureDatabase& db, const std::string& name, const std::string& label, const pcl_flowseg::Signature& s) {
+            return db.add (makeEntry (name, label, s));
+          }, py::arg ("name"), py::arg ("label"), py::arg ("signature"),
+          "Adds a shape (replacing one of the same name); True when it was new.")
+      .def ("merge", &SignatureDatabase::merge, py::arg ("shard"), "Adds every shape of another database, in its order; returns how many were new.")
+      .def ("save", [] (const SignatureDatabase& db, const std::string& path, double lock_wait) {
+            pcl_flowseg::Status s;
+            {
+              py::gil_scoped_release release;
+              s = db.save (path, lock_wait);
+            }
+            raiseOsErrorIfFailed (s);
+          }, py::arg ("path"), py::arg ("lock_wait") = pcl_flowseg::kDefaultLockWait,
+          "Writes the whole database (replacing the file) under its lock, atomically: readers see the old or the new file.")
+      .def ("query", &query, py::arg ("signature"), py::arg ("k") = pcl_flowseg::kDefaultQueryResults, py::arg ("candidates") = pcl_flowseg::kDefaultCandidates,
+            "The k most similar stored shapes (all when k = 0), aligning the `candidates` nearest by summary (0 = all); "
+            "keywords threshold, allow_mirror, alignment_points.")
+      .def ("entries", [] (const SignatureDatabase& db) {
+            std::vector<std::tuple<std::string, std::string, pcl_flowseg::Signature>> out;
+            for (const auto& e : db.entries ())
+              out.emplace_back (e.name, e.label, e.signature);
+            return out;
+          }, "Every stored shape as (name, label, signature), in file order.")
+      .def ("__len__", &SignatureDatabase::size)
+      .def ("__contains__", &SignatureDatabase::contains)
+      .def_static ("add_to_file", &addToFile, py::arg ("path"), py::arg ("shapes"), py::arg ("lock_wait") = pcl_flowseg::kDefaultLockWait,
+                   "Adds (name, label, signature) tuples to a database file in one locked read-modify-write: concurrent "
+                   "writers (processes or threads) lose nothing. Returns the number of stored shapes.")
+      .def_static ("merge_files", &mergeFiles, py::arg ("path"), py::arg ("shards"), py::arg ("lock_wait") = pcl_flowseg::kDefaultLockWait,
+                   "Merges database files into the file at path (created when missing), in order, in one locked "
+                   "transaction, as `flowseg_db merge`. Returns the number of stored shapes.");
+}
+
+} // namespace pcl_flowseg_python

@@ -1,0 +1,158 @@
+/*
+ * pcl_flowseg Python bindings - signatures of arrays and shape files, and matching two of them.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "bindings.h"
+#include "python_values.h"
+
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/signature/shape_signature.h>
+#include <pcl_flowseg/signature/signature.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
+
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+namespace pcl_flowseg_python {
+namespace {
+
+using pcl_flowseg::Signature;
+
+/** A signature from its arrays, checked as one read from a file would be. */
+Signature
+makeSignature (const py::object& points, const py::object& weights, int dimension, double unit, double interior_volume,
+               double significance)
+{
+  Signature s;
+  s.dimension = dimension;
+  s.unit = unit;
+  s.interior_volume = interior_volume;
+  s.significance = significance;
+  const std::vector<Eigen::Vector3d> positions = pointsFromPython (points, "points", true);
+  const std::vector<double> w = weights.cast<std::vector<double>> ();
+  if (w.size () != positions.size ())
+    throw py::value_error ("weights: needs one weight per point (" + std::to_string (positions.size ()) + "), got " +
+                           std::to_string (w.size ()));
+  for (std::size_t i = 0; i < positions.size (); ++i)
+    s.points.push_back ({positions[i], w[i]});
+  raiseIfFailed (pcl_flowseg::checkSignature (s));
+  return s;
+}
+
+Signature
+signatureOfArray (const py::object& points_object, const py::kwargs& kwargs)
+{
+  CallParameters call;
+  pcl_flowseg::MatchParameters unused;
+  applyKwargs (kwargs, kFlowArguments | kSignificanceArgument, call, unused);
+  const std::vector<Eigen::Vector3d> points = pointsFromPython (points_object, "points", false);
+  Signature signature;
+  pcl_flowseg::Status status;
+  {
+    py::gil_scoped_release release;
+    pcl_flowseg::FlowResult result;
+    status = pcl_flowseg::runFlowSegmentation (points, call.flow, result);
+    if (status)
+      status = pcl_flowseg::signatureFromSegmentation (result, call.significance, signature);
+  }
+  raiseIfFailed (status);
+  return signature;
+}
+
+Signature
+signatureOfFile (const std::string& path, const py::kwargs& kwargs)
+{
+  CallParameters call;
+  pcl_flowseg::MatchParameters unused;
+  applyKwargs (kwargs, kFlowArguments | kSignificanceArgument | kShapeInputArguments, call, unused);
+  Signature signature;
+  pcl_flowseg::Status status;
+  {
+    py::gil_scoped_release release;
+    status = pcl_flowseg::signatureOfShapeFile (path, call.input, call.flow, call.significance, signature);
+  }
+  raiseOsErrorIfFailed (status);
+  return signature;
+}
+
+pcl::SignatureMatcher::Result
+match (const Signature& a, const Signature& b, const py::kwargs& kwargs)
+{
+  CallParameters unused;
+  pcl_flowseg::MatchParameters params;
+  applyKwargs (kwargs, kMatchArguments, unused, params);
+  pcl::SignatureMatcher matcher;
+  matcher.setParameters (params);
+  pcl::SignatureMatcher::Result result;
+  {
+    py::gil_scoped_release release;
+    result = matcher.match (a, b);
+  }
+  raiseIfFailed (result.status);
+  return result;
+}
+
+void
+bindSignatureClass (py::module_& m)
+{
+  py::class_<Signature> (m, "Signature",
+                         "A shape's significant interior features as weighted points, normalised for translation, "
+                         "rotation, mirroring and scale.")
+      .def (py::init (&makeSignature), py::arg ("points"), py::arg ("weights"), py::arg ("dimension") = 3, py::arg ("unit") = 1.0,
+            py::arg ("interior_volume") = 0.0, py::arg ("significance") = pcl_flowseg::kDefaultSignificance,
+            "A signature from its parts (checked: weights in [0, 1], non-increasing, summing to 1; ...).")
+      .def_readonly ("dimension", &Signature::dimension)
+      .def_property_readonly ("points", [] (const Signature& s) {
+            std::vector<Eigen::Vector3d> rows;
+            for (const auto& p : s.points)
+              rows.push_back (p.position);
+            return rowsToArray (rows);
+          }, "(k, 3) positions, in the signature's unit, relative to the interior's centroid.")
+      .def_property_readonly ("weights", [] (const Signature& s) {
+            std::vector<double> w;
+            for (const auto& p : s.points)
+              w.push_back (p.weight);
+            return py::array_t<double> (static_cast<py::ssize_t> (w.size ()), w.data ());
+          }, "(k,) volume shares, decreasing, summing to 1.")
+      .def_readonly ("unit", &Signature::unit, "The length unit: interior volume^(1/d), input units.")
+      .def_readonly ("interior_volume", &Signature::interior_volume)
+      .def_readonly ("significance", &Signature::significance)
+      .def ("__len__", [] (const Signature& s) { return s.points.size (); })
+      .def ("__repr__", [] (const Signature& s) {
+        return "<Signature " + std::to_string (s.dimension) + "D, " + std::to_string (s.points.size ()) + " features>";
+      });
+}
+
+void
+bindMatchResult (py::module_& m)
+{
+  using Result = pcl::SignatureMatcher::Result;
+  py::class_<Result> (m, "MatchResult", "The best alignment of two signatures found by match().")
+      .def_readonly ("similarity", &Result::similarity, "score over the larger number of points: 1 for identical signatures.")
+      .def_readonly ("score", &Result::score, "The paper's score (higher is more similar).")
+      .def_readonly ("linear", &Result::linear, "3x3 rotation (mirrored when its determinant is -1) mapping b onto a.")
+      .def_readonly ("translation", &Result::translation)
+      .def_readonly ("mirrored", &Result::mirrored)
+      .def_readonly ("pairs", &Result::pairs, "Matched (index in a, index in b).")
+      .def_readonly ("alignments", &Result::alignments, "Alignments scored.")
+      .def ("__repr__", [] (const Result& r) { return "<MatchResult similarity=" + std::to_string (r.similarity) + ">"; });
+}
+
+} // namespace
+
+void
+bindSignature (py::module_& m)
+{
+  bindSignatureClass (m);
+  bindMatchResult (m);
+  m.def ("signature", &signatureOfArray, py::arg ("points"),
+         "The signature of a point sample: segment() with the same keywords, then its significant interior features.");
+  m.def ("signature_of_file", &signatureOfFile, py::arg ("path"),
+         "The signature of a shape file (points, meshes sampled with mesh_points and seed, silhouette images), "
+         "as flowseg_db computes it. Raises OSError when the file cannot be read or segmented.");
+  m.def ("match", &match, py::arg ("a"), py::arg ("b"),
+         "Aligns and scores two signatures; keywords threshold, allow_mirror, alignment_points. match(a, b) equals "
+         "match(b, a) in similarity.");
+}
+
+} // namespace pcl_flowseg_python

@@ -1,0 +1,127 @@
+"""Signatures, matching and the database: the same content as flowseg_db, every bad-input path."""
+import os
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import pcl_flowseg as fs
+from conftest import SAMPLES, app
+
+
+def test_signatures_equal_those_flowseg_db_stores(collection, tmp_path):
+    db_path = str(tmp_path / "cli.db")
+    subprocess.run([app("flowseg_db"), "build", db_path, str(collection), "-q"], check=True)
+    db = fs.Database.open(db_path)
+    files = fs.list_shape_files(str(collection))
+    assert [name for name, _, _ in db.entries()] == files
+    for name, label, stored in db.entries():
+        assert label == fs.shape_label(name)
+        sig = fs.signature_of_file(os.path.join(str(collection), name))
+        assert np.array_equal(sig.points, stored.points) and np.array_equal(sig.weights, stored.weights)
+        assert sig.unit == stored.unit and sig.dimension == stored.dimension
+
+
+def test_database_add_save_open_query(collection, tmp_path):
+    db = fs.Database()
+    for name in fs.list_shape_files(str(collection)):
+        assert db.add(name, fs.shape_label(name), fs.signature_of_file(os.path.join(str(collection), name)))
+    assert len(db) == 9 and "animal3d/animal3d-1.pcd" in db
+    path = str(tmp_path / "py.db")
+    db.save(path)
+    again = fs.Database.open(path)
+    assert len(again) == 9
+    query = fs.signature_of_file(os.path.join(str(collection), "snowman3d", "snowman3d-2.pcd"))
+    hits = again.query(query, k=3)
+    assert len(hits) == 3 and hits[0].name == "snowman3d/snowman3d-2.pcd" and hits[0].similarity == pytest.approx(1.0)
+    assert hits[0].label == "snowman3d" and hits[0].aligned
+    few = again.query(query, k=0, candidates=2)
+    assert len(few) == 9 and sum(h.aligned for h in few) == 2
+    assert all(np.isnan(h.similarity) for h in few if not h.aligned)
+
+
+def test_match_is_symmetric_and_invariant():
+    points, _ = fs.read_points(os.path.join(SAMPLES, "animal3d.pcd"))
+    a = fs.signature(points)
+    rotation = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    b = fs.signature(2.5 * points @ rotation.T + np.array([3.0, -1.0, 7.0]))
+    result = fs.match(a, b)
+    assert result.similarity == pytest.approx(1.0, abs=1e-6)
+    assert result.linear.shape == (3, 3) and len(result.pairs) == len(a)
+    other = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
+    assert fs.match(a, other).similarity == pytest.approx(fs.match(other, a).similarity)
+    assert fs.match(a, other, threshold=0.2, allow_mirror=False, alignment_points=2).alignments > 0
+
+
+def test_concurrent_adds_from_threads_lose_nothing(tmp_path):
+    path = str(tmp_path / "threads.db")
+    sig = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
+    errors = []
+
+    def add(i):
+        try:
+            fs.Database.add_to_file(path, [("shape%02d" % i, "c%d" % (i % 3), sig)])
+        except Exception as error:  # collected, asserted below
+            errors.append(error)
+
+    threads = [threading.Thread(target=add, args=(i,)) for i in range(16)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors and len(fs.Database.open(path)) == 16
+
+
+def test_merge_files_in_order(collection, tmp_path):
+    files = fs.list_shape_files(str(collection))
+    shards = []
+    for part in (files[:4], files[4:]):
+        db = fs.Database()
+        for name in part:
+            db.add(name, fs.shape_label(name), fs.signature_of_file(os.path.join(str(collection), name)))
+        shards.append(str(tmp_path / ("shard%d.db" % len(shards))))
+        db.save(shards[-1])
+    merged = str(tmp_path / "merged.db")
+    assert fs.Database.merge_files(merged, shards) == 9
+    whole = str(tmp_path / "whole.db")
+    subprocess.run([app("flowseg_db"), "build", whole, str(collection), "-q"], check=True)
+    assert open(merged, "rb").read() == open(whole, "rb").read()
+
+
+def test_bad_input_raises(tmp_path):
+    with pytest.raises(OSError, match="cannot open"):
+        fs.Database.open(str(tmp_path / "missing.db"))
+    damaged = tmp_path / "damaged.db"
+    damaged.write_text("pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 1 one\np 0 0 1 8e300\n")
+    with pytest.raises(OSError, match="damaged.db:4"):
+        fs.Database.open(str(damaged))
+    with pytest.raises(OSError):
+        fs.Database.merge_files(str(tmp_path / "m.db"), [str(damaged)])
+    assert not (tmp_path / "m.db").exists()
+    with pytest.raises(OSError, match="cannot open"):
+        fs.read_points(str(tmp_path / "none.pcd"))
+    (tmp_path / "bad.pcd").write_text("not a pcd\n")
+    with pytest.raises(OSError):
+        fs.read_points(str(tmp_path / "bad.pcd"))
+    with pytest.raises(OSError):
+        fs.signature_of_file(str(tmp_path / "bad.pcd"))
+    with pytest.raises(ValueError, match="mesh"):
+        fs.signature_of_file(os.path.join(SAMPLES, "animal3d.pcd"), mesh_points=2)
+    with pytest.raises(ValueError, match="weight"):
+        fs.Signature(np.zeros((2, 3)), [0.2, 0.9])
+    with pytest.raises(ValueError, match="weights"):
+        fs.Signature(np.zeros((2, 3)), [1.0])
+    sig = fs.Signature(np.zeros((1, 3)), [1.0])
+    with pytest.raises(ValueError, match="label"):
+        fs.Database().add("x", "two words", sig)
+    with pytest.raises(ValueError, match="name"):
+        fs.Database().add("", "c", sig)
+    with pytest.raises(ValueError, match="alignment"):
+        fs.match(sig, sig, alignment_points=0)
+    with pytest.raises(ValueError, match="threshold"):
+        fs.Database().query(sig, threshold=-1)
+    with pytest.raises(TypeError):
+        fs.match(sig, sig, rho=2)
+    with pytest.raises(TypeError):
+        fs.Database().query(sig, k=-1)
