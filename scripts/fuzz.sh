@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer and runs
 # each for a bounded time on a copy of its corpus (fuzz/corpus/TARGET). Crashing inputs are kept
 # in build-fuzz/crashes/TARGET. Usage: bash scripts/fuzz.sh [SECONDS_PER_TARGET (60) [TARGET...]]
-# (targets: point_file mesh_file image database database_update segmentation; default all).
+# (targets: point_file mesh_file image database database_update segmentation python_arguments;
+# default all).
 # SECONDS 0 replays the kept corpus once, without mutating it: what CI runs, so that the targets
 # keep building and what the corpus reaches stays fixed without making CI depend on luck.
 # Installs clang with apt-get when it is missing.
@@ -10,7 +11,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift $(( $# > 0 ? 1 : 0 ))
-targets=${*:-point_file mesh_file image database database_update segmentation}
+targets=${*:-point_file mesh_file image database database_update segmentation python_arguments}
 build=${FUZZ_BUILD:-build-fuzz}
 if ! command -v clang++ >/dev/null 2>&1; then
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
