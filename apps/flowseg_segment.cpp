@@ -48,7 +48,7 @@ makeParser (Options& o)
   p.point ("--viewpoint", "sensor position of a single-view scan: space in front is outside", o.params.interior.viewpoint);
   p.flag ("--use-sensor-origin", "take the viewpoint from the PCD file's VIEWPOINT", o.use_sensor_origin);
   p.text ("-o, --output", "PREFIX", "output prefix (default: INPUT without its extension)", o.prefix);
-  p.flag ("--binary", "write the label PCD in binary (default ASCII)", o.binary);
+  p.flag ("--binary", "write the label PCD and the PLY files in binary: smaller, faster to\nwrite and read (default ASCII, which any tool reads and a diff shows)", o.binary);
   bool* surface = &o.surface;
   p.action ("--no-surface", "do not write PREFIX.surface.ply", [surface] () { *surface = false; });
   flowseg_app::addThreadsOption (p, o.params.execution.threads);
@@ -103,9 +103,9 @@ writeOutputs (const Options& o, const pcl::FlowSegmentation<pcl::PointNormal>& s
   info.significance = o.significance;
   std::vector<pcl_flowseg::Status> written = {pcl_flowseg::writeLabelCloud (o.prefix + ".labels.pcd", labels, o.binary),
                                               pcl_flowseg::writeSegmentationJson (o.prefix + ".json", result, info),
-                                              pcl_flowseg::writeSegmentationPly (o.prefix + ".ply", result, labels)};
+                                              pcl_flowseg::writeSegmentationPly (o.prefix + ".ply", result, labels, o.binary)};
   if (o.surface && o.params.interior.separate)
-    written.push_back (pcl_flowseg::writeSurfacePly (o.prefix + ".surface.ply", result));
+    written.push_back (pcl_flowseg::writeSurfacePly (o.prefix + ".surface.ply", result, o.binary));
   if (result.dimension == 2)
     written.push_back (pcl_flowseg::writeSegmentationSvg (o.prefix + ".svg", result));
   for (const auto& s : written)

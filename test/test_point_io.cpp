@@ -20,6 +20,7 @@
 #include <pcl_flowseg/io/json_text.h>
 
 #include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
 
 #include <gtest/gtest.h>
 
@@ -265,6 +266,57 @@ TEST (ResultWriter, SegmentationOutputsAreWellFormed)
   EXPECT_NE (ply.find ("element vertex 400\n"), std::string::npos); // the NaN point is not drawn
   EXPECT_NE (ply.find ("element face " + std::to_string (seg.getResult ().cells.size ())), std::string::npos);
   EXPECT_EQ (ply.find ("nan"), std::string::npos);
+}
+
+TEST (ResultWriter, AsciiLabelsAreExactAndBinaryPlyHoldsTheSameValues)
+{
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : flowseg_test::shapeSample ("animal3d", 1500))
+    cloud->push_back (pcl::PointXYZ (static_cast<float> (p.x () * 1.0001), static_cast<float> (p.y ()), static_cast<float> (p.z ())));
+  cloud->push_back (pcl::PointXYZ (std::nanf (""), 0.0f, 0.0f));
+  pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (cloud);
+  std::vector<pcl::PointIndices> segments;
+  ASSERT_TRUE (seg.segment (segments));
+  pcl::PointCloud<pcl::PointXYZL> labels;
+  seg.getLabelCloud (labels);
+
+  // ASCII labels: every coordinate reads back to the same float, every label to the same number.
+  ASSERT_TRUE (writeLabelCloud (dir.file ("l.pcd"), labels, false).ok);
+  pcl::PointCloud<pcl::PointXYZL> back;
+  ASSERT_EQ (pcl::io::loadPCDFile (dir.file ("l.pcd"), back), 0);
+  ASSERT_EQ (back.size (), labels.size ());
+  for (std::size_t i = 0; i + 1 < labels.size (); ++i)
+  {
+    ASSERT_EQ (back[i].x, labels[i].x) << i;
+    ASSERT_EQ (back[i].y, labels[i].y) << i;
+    ASSERT_EQ (back[i].z, labels[i].z) << i;
+    ASSERT_EQ (back[i].label, labels[i].label) << i;
+  }
+  EXPECT_TRUE (std::isnan (back.back ().x));
+  EXPECT_EQ (back.back ().label, kNoSegment);
+
+  // Binary and ASCII PLY files hold the same vertices (PCL's reader), the binary one in fewer bytes.
+  ASSERT_TRUE (writeSegmentationPly (dir.file ("a.ply"), seg.getResult (), labels, false).ok);
+  ASSERT_TRUE (writeSegmentationPly (dir.file ("b.ply"), seg.getResult (), labels, true).ok);
+  ASSERT_TRUE (writeSurfacePly (dir.file ("as.ply"), seg.getResult (), false).ok);
+  ASSERT_TRUE (writeSurfacePly (dir.file ("bs.ply"), seg.getResult (), true).ok);
+  for (const auto& [ascii, binary] : {std::pair<std::string, std::string> ("a.ply", "b.ply"), {"as.ply", "bs.ply"}})
+  {
+    pcl::PointCloud<pcl::PointXYZ> a, b;
+    ASSERT_EQ (pcl::io::loadPLYFile (dir.file (ascii), a), 0) << ascii;
+    ASSERT_EQ (pcl::io::loadPLYFile (dir.file (binary), b), 0) << binary;
+    ASSERT_EQ (a.size (), b.size ());
+    ASSERT_GT (a.size (), 1000u);
+    for (std::size_t i = 0; i < a.size (); ++i)
+      ASSERT_TRUE (a[i].x == b[i].x && a[i].y == b[i].y && a[i].z == b[i].z) << binary << " " << i;
+    EXPECT_LT (slurp (dir.file (binary)).size (), slurp (dir.file (ascii)).size ());
+    EXPECT_NE (slurp (dir.file (binary)).find ("format binary_little_endian 1.0\n"), std::string::npos);
+  }
+  pcl::PolygonMesh mesh;
+  ASSERT_EQ (pcl::io::loadPLYFile (dir.file ("bs.ply"), mesh), 0);
+  EXPECT_EQ (mesh.polygons.size (), seg.getResult ().interior.boundary_facets);
 }
 
 TEST (FuzzRegressions, InputsTheFuzzersFoundAreRefusedCleanly)

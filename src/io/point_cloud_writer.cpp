@@ -6,17 +6,63 @@
 
 #include <pcl_flowseg/io/atomic_file.h>
 
+#include "io/output_buffer.h"
+
 #include <pcl/io/pcd_io.h>
 
+#include <cmath>
+
 namespace pcl_flowseg {
+
+namespace {
+
+/** The header PCL's ASCII writer writes, for fields x y z (and label). */
+void
+asciiPcdHeader (OutputBuffer& out, std::uint32_t width, std::uint32_t height, const Eigen::Vector4f& origin,
+                const Eigen::Quaternionf& orientation, bool label)
+{
+  out.text ("# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\n")
+      .text (label ? "FIELDS x y z label\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n" : "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n")
+      .text ("WIDTH ").integer (width).text ("\nHEIGHT ").integer (height).text ("\nVIEWPOINT ");
+  for (int i = 0; i < 3; ++i)
+    out.number (origin[i]).character (' ');
+  out.number (orientation.w ()).character (' ').number (orientation.x ()).character (' ').number (orientation.y ())
+      .character (' ').number (orientation.z ());
+  out.text ("\nPOINTS ").integer (static_cast<std::int64_t> (width) * height).text ("\nDATA ascii\n");
+}
+
+/** A coordinate as PCL writes it: the shortest exact form, "nan" for any NaN. */
+void
+coordinate (OutputBuffer& out, float value)
+{
+  if (std::isnan (value))
+    out.text ("nan");
+  else
+    out.number (value);
+}
+
+} // namespace
 
 Status
 writeLabelCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZL>& labels, bool binary)
 {
+  if (!binary) // PCL's ASCII writer formats through a stream, several times slower
+    return writeTextFileAtomically (path, [&] (std::ostream& stream) {
+      OutputBuffer out (stream);
+      const bool organised = static_cast<std::size_t> (labels.width) * labels.height == labels.size ();
+      asciiPcdHeader (out, organised ? labels.width : static_cast<std::uint32_t> (labels.size ()), organised ? labels.height : 1,
+                      labels.sensor_origin_, labels.sensor_orientation_, true);
+      for (const pcl::PointXYZL& p : labels)
+      {
+        coordinate (out, p.x);
+        coordinate (out.character (' '), p.y);
+        coordinate (out.character (' '), p.z);
+        out.character (' ').integer (p.label).character ('\n');
+      }
+    });
   return writeFileAtomically (path, [&] (const std::string& tmp) {
     pcl::PCDWriter writer;
-    const int rc = binary ? writer.writeBinary (tmp, labels) : writer.writeASCII (tmp, labels, 8);
-    return rc == 0 ? Status::success () : Status::error ("PCD writer failed");
+    return writer.writeBinary (tmp, labels) == 0 ? Status::success () : Status::error ("PCD writer failed");
   });
 }
 

@@ -8,9 +8,12 @@
 #include <pcl_flowseg/io/atomic_file.h>
 #include <pcl_flowseg/io/segment_colours.h>
 
+#include "io/output_buffer.h"
+
 #include <cmath>
-#include <iomanip>
+#include <cstdint>
 #include <ostream>
+#include <type_traits>
 
 namespace pcl_flowseg {
 
@@ -44,16 +47,68 @@ writtenPoints (const FlowResult& r, const pcl::PointCloud<pcl::PointXYZL>& label
   return w;
 }
 
-std::ostream&
-operator<< (std::ostream& out, const std::array<std::uint8_t, 3>& c)
+/** Writes PLY values as text (separated by spaces, a line per element) or as little-endian binary. */
+class PlyValues
 {
-  return out << int (c[0]) << " " << int (c[1]) << " " << int (c[2]);
+public:
+  PlyValues (std::ostream& out, bool binary) : buffer_ (out), binary_ (binary) {}
+
+  template <typename Value>
+  PlyValues&
+  operator<< (Value value)
+  {
+    if (binary_)
+      buffer_.binary (value);
+    else
+    {
+      if (!first_)
+        buffer_.character (' ');
+      if constexpr (std::is_floating_point_v<Value>)
+        buffer_.number (value);
+      else
+        buffer_.integer (static_cast<std::int64_t> (value));
+    }
+    first_ = false;
+    return *this;
+  }
+
+  PlyValues&
+  operator<< (const std::array<std::uint8_t, 3>& colour)
+  {
+    return *this << colour[0] << colour[1] << colour[2];
+  }
+
+  /** Ends an element (a line in text). */
+  void
+  end ()
+  {
+    if (!binary_)
+      buffer_.character ('\n');
+    first_ = true;
+  }
+
+  OutputBuffer&
+  buffer ()
+  {
+    return buffer_;
+  }
+
+private:
+  OutputBuffer buffer_;
+  bool binary_;
+  bool first_ = true;
+};
+
+const char*
+plyFormat (bool binary)
+{
+  return binary ? "format binary_little_endian 1.0\n" : "format ascii 1.0\n";
 }
 
 } // namespace
 
 Status
-writeSegmentationPly (const std::string& path, const FlowResult& r, const pcl::PointCloud<pcl::PointXYZL>& labels)
+writeSegmentationPly (const std::string& path, const FlowResult& r, const pcl::PointCloud<pcl::PointXYZL>& labels, bool binary)
 {
   auto colourOf = [&] (std::uint32_t feature) {
     const bool infinity = feature != kNoSegment && feature < r.features.size () &&
@@ -64,33 +119,38 @@ writeSegmentationPly (const std::string& path, const FlowResult& r, const pcl::P
   const WrittenPoints written = writtenPoints (r, labels);
   const bool faces = r.dimension == 2;
   return writeTextFileAtomically (path, [&] (std::ostream& out) {
-    out << "ply\nformat ascii 1.0\ncomment pcl_flowseg segmentation: colour = feature, grey = none or flows to infinity\n";
-    out << "element vertex " << written.count << "\n";
-    out << "property float x\nproperty float y\nproperty float z\n";
-    out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+    PlyValues ply (out, binary);
+    ply.buffer ().text ("ply\n").text (plyFormat (binary))
+        .text ("comment pcl_flowseg segmentation: colour = feature, grey = none or flows to infinity\nelement vertex ")
+        .integer (written.count)
+        .text ("\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n");
     if (faces)
-      out << "element face " << r.cells.size () << "\nproperty list uchar int vertex_indices\n"
-          << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-    out << "end_header\n" << std::setprecision (9);
+      ply.buffer ().text ("element face ").integer (static_cast<std::int64_t> (r.cells.size ()))
+          .text ("\nproperty list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n");
+    ply.buffer ().text ("end_header\n");
     for (std::size_t i = 0; i < labels.size (); ++i)
       if (written.of_point[i] >= 0)
-        out << labels[i].x << " " << labels[i].y << " " << labels[i].z << " " << colourOf (labels[i].label) << "\n";
+      {
+        ply << labels[i].x << labels[i].y << labels[i].z << colourOf (labels[i].label);
+        ply.end ();
+      }
     if (!faces)
       return;
     for (const FlowCell& cell : r.cells)
     {
       // Triangles of a reported feature in its colour (as its points), the others grey.
       const int feature = feature_of_segment[static_cast<std::size_t> (cell.segment)];
-      out << "3";
+      ply << std::uint8_t (3);
       for (int k = 0; k < 3; ++k)
-        out << " " << written.of_vertex[static_cast<std::size_t> (cell.vertices[k])];
-      out << " " << (feature < 0 ? segmentColour (kNoSegment) : colourOf (static_cast<std::uint32_t> (feature))) << "\n";
+        ply << std::int32_t (written.of_vertex[static_cast<std::size_t> (cell.vertices[k])]);
+      ply << (feature < 0 ? segmentColour (kNoSegment) : colourOf (static_cast<std::uint32_t> (feature)));
+      ply.end ();
     }
   });
 }
 
 Status
-writeSurfacePly (const std::string& path, const FlowResult& r)
+writeSurfacePly (const std::string& path, const FlowResult& r, bool binary)
 {
   if (!r.interior.computed)
     return Status::error ("cannot write " + path + ": no interior/exterior separation was run");
@@ -99,27 +159,42 @@ writeSurfacePly (const std::string& path, const FlowResult& r)
   for (const FlowCell& c : r.cells)
     inside_cells += c.inside == 1;
   return writeTextFileAtomically (path, [&] (std::ostream& out) {
-    out << "ply\nformat ascii 1.0\ncomment pcl_flowseg reconstructed surface (interior/exterior boundary)\n";
-    out << "element vertex " << r.vertices.size () << "\nproperty double x\nproperty double y\nproperty double z\n";
-    if (r.dimension == 3)
-      out << "element face " << facets.size () << "\nproperty list uchar int vertex_indices\n";
-    else
-      out << "element face " << inside_cells << "\nproperty list uchar int vertex_indices\n"
-          << "element edge " << facets.size () << "\nproperty int vertex1\nproperty int vertex2\n";
-    out << "end_header\n" << std::setprecision (17);
+    PlyValues ply (out, binary);
+    ply.buffer ().text ("ply\n").text (plyFormat (binary))
+        .text ("comment pcl_flowseg reconstructed surface (interior/exterior boundary)\nelement vertex ")
+        .integer (static_cast<std::int64_t> (r.vertices.size ()))
+        .text ("\nproperty double x\nproperty double y\nproperty double z\nelement face ")
+        .integer (static_cast<std::int64_t> (r.dimension == 3 ? facets.size () : inside_cells))
+        .text ("\nproperty list uchar int vertex_indices\n");
+    if (r.dimension == 2)
+      ply.buffer ().text ("element edge ").integer (static_cast<std::int64_t> (facets.size ()))
+          .text ("\nproperty int vertex1\nproperty int vertex2\n");
+    ply.buffer ().text ("end_header\n");
     for (const auto& v : r.vertices)
-      out << v.x () << " " << v.y () << " " << v.z () << "\n";
+    {
+      ply << v.x () << v.y () << v.z ();
+      ply.end ();
+    }
     if (r.dimension == 3)
     {
       for (const auto& t : facets)
-        out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+      {
+        ply << std::uint8_t (3) << std::int32_t (t[0]) << std::int32_t (t[1]) << std::int32_t (t[2]);
+        ply.end ();
+      }
       return;
     }
     for (const FlowCell& c : r.cells)
       if (c.inside == 1)
-        out << "3 " << c.vertices[0] << " " << c.vertices[1] << " " << c.vertices[2] << "\n";
+      {
+        ply << std::uint8_t (3) << std::int32_t (c.vertices[0]) << std::int32_t (c.vertices[1]) << std::int32_t (c.vertices[2]);
+        ply.end ();
+      }
     for (const auto& e : facets)
-      out << e[0] << " " << e[1] << "\n";
+    {
+      ply << std::int32_t (e[0]) << std::int32_t (e[1]);
+      ply.end ();
+    }
   });
 }
 

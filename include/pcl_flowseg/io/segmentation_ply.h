@@ -17,15 +17,16 @@ namespace pcl_flowseg {
 /** \brief Every input point coloured by its feature and, in 2D, the Delaunay triangles as faces
   * coloured by feature. \a labels holds one point per point handed to the segmentation, in that
   * order (FlowSegmentation::getLabelCloud of a run without setIndices). Points with non-finite
-  * coordinates are not written. Atomic. */
+  * coordinates are not written. Atomic. ASCII, or little-endian binary with \a binary (smaller,
+  * faster to write and read). */
 Status
 writeSegmentationPly (const std::string& path, const FlowResult& result,
-                      const pcl::PointCloud<pcl::PointXYZL>& labels);
+                      const pcl::PointCloud<pcl::PointXYZL>& labels, bool binary = false);
 
 /** \brief The reconstructed surface as a PLY mesh: in 3D the boundary triangles, in 2D the
   * interior triangles as faces and the boundary curve as edges. Atomic. Fails when the
-  * interior/exterior separation was not run. */
+  * interior/exterior separation was not run. ASCII, or little-endian binary with \a binary. */
 Status
-writeSurfacePly (const std::string& path, const FlowResult& result);
+writeSurfacePly (const std::string& path, const FlowResult& result, bool binary = false);
 
 } // namespace pcl_flowseg
