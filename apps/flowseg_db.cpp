@@ -121,31 +121,51 @@ build (const OptionParser& p, const std::vector<std::string>& args, const Option
   return flowseg_app::kExitSuccess;
 }
 
-/** Adds the signatures of args[2...] to the database at args[1] in one locked transaction, so that
-  * concurrent adds lose nothing. */
+/** Adds every shape of \a shards to the database at \a path in one locked transaction, so that
+  * concurrent writers lose nothing. A damaged database is refused before anything changes. */
 int
-add (const OptionParser& p, const std::vector<std::string>& args, const Options& o, std::size_t& stored)
+mergeUnderLock (const OptionParser& p, const std::string& path, const std::vector<pcl_flowseg::SignatureDatabase>& shards,
+                std::size_t& stored)
 {
-  if (args.size () < 3)
-    return p.usageError ("add needs DB and at least one FILE");
-  if (std::ifstream (args[1]).good ()) // a damaged database fails now, not after the signatures
-    if (const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase ().load (args[1]); !s)
-      return p.failure (s.message);
-  const std::vector<std::string> files (args.begin () + 2, args.end ());
-  std::vector<pcl_flowseg::ShapeEntry> entries;
-  if (!computeEntries ("", files, o, o.label, entries))
-    return flowseg_app::kExitFailure;
-  const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase::update (args[1], [&] (pcl_flowseg::SignatureDatabase& db) {
-    for (const auto& e : entries)
-      db.add (e);
+  const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase::update (path, [&] (pcl_flowseg::SignatureDatabase& db) {
+    for (const auto& shard : shards)
+      db.merge (shard);
     stored = db.size ();
     return pcl_flowseg::Status::success ();
   });
   return s ? flowseg_app::kExitSuccess : p.failure (s.message);
 }
 
-/** Adds every shape of the databases args[2...] to the database at args[1] in one locked
-  * transaction. The shards are read and checked first: a damaged one changes nothing. */
+/** The database at \a path, if there is one, is readable (checked before long work). */
+pcl_flowseg::Status
+existingDatabaseReads (const std::string& path)
+{
+  if (!std::ifstream (path).good ())
+    return pcl_flowseg::Status::success ();
+  return pcl_flowseg::SignatureDatabase ().load (path);
+}
+
+/** Adds the signatures of args[2...] to the database at args[1]; a damaged database fails before
+  * the signatures are computed. */
+int
+add (const OptionParser& p, const std::vector<std::string>& args, const Options& o, std::size_t& stored)
+{
+  if (args.size () < 3)
+    return p.usageError ("add needs DB and at least one FILE");
+  if (const pcl_flowseg::Status s = existingDatabaseReads (args[1]); !s)
+    return p.failure (s.message);
+  const std::vector<std::string> files (args.begin () + 2, args.end ());
+  std::vector<pcl_flowseg::ShapeEntry> entries;
+  if (!computeEntries ("", files, o, o.label, entries))
+    return flowseg_app::kExitFailure;
+  std::vector<pcl_flowseg::SignatureDatabase> added (1);
+  for (const auto& e : entries)
+    added[0].add (e);
+  return mergeUnderLock (p, args[1], added, stored);
+}
+
+/** Adds every shape of the databases args[2...] to the database at args[1]. The shards are read
+  * and checked first: a damaged one changes nothing. */
 int
 merge (const OptionParser& p, const std::vector<std::string>& args, std::size_t& stored)
 {
@@ -155,16 +175,9 @@ merge (const OptionParser& p, const std::vector<std::string>& args, std::size_t&
   for (std::size_t i = 0; i < shards.size (); ++i)
     if (const pcl_flowseg::Status s = shards[i].load (args[i + 2]); !s)
       return p.failure (s.message);
-  if (std::ifstream (args[1]).good ())
-    if (const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase ().load (args[1]); !s)
-      return p.failure (s.message);
-  const pcl_flowseg::Status s = pcl_flowseg::SignatureDatabase::update (args[1], [&] (pcl_flowseg::SignatureDatabase& db) {
-    for (const auto& shard : shards)
-      db.merge (shard);
-    stored = db.size ();
-    return pcl_flowseg::Status::success ();
-  });
-  return s ? flowseg_app::kExitSuccess : p.failure (s.message);
+  if (const pcl_flowseg::Status s = existingDatabaseReads (args[1]); !s)
+    return p.failure (s.message);
+  return mergeUnderLock (p, args[1], shards, stored);
 }
 
 int

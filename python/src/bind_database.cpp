@@ -71,27 +71,35 @@ query (const SignatureDatabase& db, const pcl_flowseg::Signature& signature, std
   return out;
 }
 
-/** Adds \a shapes (name, label, signature) to the database file \a path in one locked transaction. */
+/** Adds \a shards to the database file \a path in one locked transaction, without the GIL;
+  * \return the number of stored shapes. */
 std::size_t
-addToFile (const std::string& path, const std::vector<std::tuple<std::string, std::string, pcl_flowseg::Signature>>& shapes,
-           double lock_wait)
+mergeIntoFile (const std::string& path, const std::vector<SignatureDatabase>& shards, double lock_wait)
 {
-  std::vector<pcl_flowseg::ShapeEntry> entries;
-  for (const auto& [name, label, signature] : shapes)
-    entries.push_back (makeEntry (name, label, signature));
   std::size_t stored = 0;
   pcl_flowseg::Status s;
   {
     py::gil_scoped_release release;
     s = SignatureDatabase::update (path, [&] (SignatureDatabase& db) {
-      for (const auto& e : entries)
-        db.add (e);
+      for (const auto& shard : shards)
+        db.merge (shard);
       stored = db.size ();
       return pcl_flowseg::Status::success ();
     }, lock_wait);
   }
   raiseOsErrorIfFailed (s);
   return stored;
+}
+
+/** Adds \a shapes (name, label, signature) to the database file \a path in one locked transaction. */
+std::size_t
+addToFile (const std::string& path, const std::vector<std::tuple<std::string, std::string, pcl_flowseg::Signature>>& shapes,
+           double lock_wait)
+{
+  std::vector<SignatureDatabase> added (1);
+  for (const auto& [name, label, signature] : shapes)
+    added[0].add (makeEntry (name, label, signature));
+  return mergeIntoFile (path, added, lock_wait);
 }
 
 /** Merges the database files \a shards, in order, into the file \a path in one locked transaction. */
@@ -101,19 +109,7 @@ mergeFiles (const std::string& path, const std::vector<std::string>& shards, dou
   std::vector<SignatureDatabase> loaded;
   for (const auto& shard : shards)
     loaded.push_back (open (shard));
-  std::size_t stored = 0;
-  pcl_flowseg::Status s;
-  {
-    py::gil_scoped_release release;
-    s = SignatureDatabase::update (path, [&] (SignatureDatabase& db) {
-      for (const auto& shard : loaded)
-        db.merge (shard);
-      stored = db.size ();
-      return pcl_flowseg::Status::success ();
-    }, lock_wait);
-  }
-  raiseOsErrorIfFailed (s);
-  return stored;
+  return mergeIntoFile (path, loaded, lock_wait);
 }
 
 void
