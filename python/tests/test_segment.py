@@ -173,3 +173,15 @@ def test_gil_is_released_during_the_computation():
     during = [x for x in ticks if start < x < end]
     # With the GIL held the ticker could not run at all while segment() works (> 0.1 s here).
     assert end - start > 0.1 and len(during) >= 0.25 * (end - start) / 0.005, (end - start, len(during))
+
+
+def test_any_memory_layout_gives_the_same_labels():
+    points, _ = fs.read_points(os.path.join(SAMPLES, "animal3d.pcd"))
+    labels = fs.segment(points).labels
+    assert (fs.segment(np.asfortranarray(points)).labels == labels).all()
+    assert (fs.segment(points[::2]).labels == fs.segment(np.ascontiguousarray(points[::2])).labels).all()
+    wide = np.zeros((len(points), 5))
+    wide[:, 1:4] = points
+    assert (fs.segment(wide[:, 1:4]).labels == labels).all()  # a column slice: strides of 40 bytes
+    with pytest.raises(ValueError, match="empty"):
+        fs.segment(np.zeros((0, 3)))
