@@ -25,14 +25,6 @@ where (const std::string& path, std::size_t line)
   return path + ":" + std::to_string (line) + ": ";
 }
 
-/** The header of a PCD file, as far as the checks below need it. */
-struct PcdHeader
-{
-  std::vector<std::string> fields, sizes, types, counts;
-  long long width = -1, height = 1, points = -1;
-  std::string data; ///< ascii, binary or binary_compressed
-};
-
 /** Why a VERSION or VIEWPOINT line's values are not the format's (PCL misreads the header after
   * such lines), or "". */
 std::string
@@ -92,6 +84,9 @@ readPcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
     {
       if (const std::string why = versionOrViewpointProblem (key, values); !why.empty ())
         return Status::error (where (path, number) + why);
+      if (key == "VIEWPOINT")
+        for (std::size_t k = 0; k < 7; ++k)
+          h.viewpoint[k] = std::strtod (values[k].c_str (), nullptr);
       continue;
     }
     else if (key == "FIELDS") h.fields = values;
@@ -157,30 +152,35 @@ pcdPointBytes (const std::string& path, PcdHeader& h, long long& point_bytes)
 } // namespace
 
 Status
-checkPcdHeader (const std::string& path)
+parsePcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
 {
-  std::ifstream in (path, std::ios::binary);
-  PcdHeader h;
-  long long point_bytes = 0;
   if (const Status s = readPcdHeader (path, in, h); !s)
     return s;
-  if (const Status s = pcdPointBytes (path, h, point_bytes); !s)
+  if (const Status s = pcdPointBytes (path, h, h.point_bytes); !s)
     return s;
   const std::size_t memory = availableMemory ();
-  if (memory > 0 && static_cast<double> (h.points) * static_cast<double> (point_bytes + 16) > 0.5 * static_cast<double> (memory))
+  if (memory > 0 && static_cast<double> (h.points) * static_cast<double> (h.point_bytes + 16) > 0.5 * static_cast<double> (memory))
     return Status::error (path + ": " + std::to_string (h.points) + " points would not fit in the available memory: refused");
   if (h.data == "binary")
   {
     const std::streampos start = in.tellg ();
     in.seekg (0, std::ios::end);
     const long long available = static_cast<long long> (in.tellg () - start);
-    if (available < h.points * point_bytes)
+    in.seekg (start);
+    if (available < h.points * h.point_bytes)
       return Status::error (path + ": truncated PCD file (" + std::to_string (available) + " data bytes, header promises " +
-                            std::to_string (h.points * point_bytes) + ")");
+                            std::to_string (h.points * h.point_bytes) + ")");
   }
   return Status::success ();
 }
 
+Status
+checkPcdHeader (const std::string& path)
+{
+  std::ifstream in (path, std::ios::binary);
+  PcdHeader h;
+  return parsePcdHeader (path, in, h);
+}
 
 } // namespace detail
 } // namespace pcl_flowseg

@@ -6,10 +6,28 @@
 
 #include <pcl_flowseg/common/status.h>
 
+#include <array>
+#include <istream>
 #include <string>
+#include <vector>
 
 namespace pcl_flowseg {
 namespace detail {
+
+/** \brief A PCD header as checkPcdHeader accepts it. */
+struct PcdHeader
+{
+  std::vector<std::string> fields, sizes, types, counts;
+  long long width = -1, height = 1, points = -1;
+  std::string data;                                   ///< ascii, binary or binary_compressed
+  std::array<double, 7> viewpoint{{0, 0, 0, 1, 0, 0, 0}}; ///< tx ty tz qw qx qy qz
+  long long point_bytes = 0;                          ///< bytes per point (binary record)
+};
+
+/** \brief Reads and checks the header of the PCD file open in \a in (see checkPcdHeader), leaving
+  * \a in at the first byte of the data. */
+Status
+parsePcdHeader (const std::string& path, std::istream& in, PcdHeader& header);
 
 /** \brief Why the PCD file \a path must not be handed to PCL's reader, or success. PCL's reader
   * crashes or allocates terabytes on many malformed headers, so the header must follow the format

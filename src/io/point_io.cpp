@@ -6,6 +6,7 @@
 
 #include "io/file_extension.h"
 #include "io/pcd_header.h"
+#include "io/pcd_reader.h"
 #include "io/ply_header.h"
 #include "io/point_fields.h"
 
@@ -168,16 +169,23 @@ loadObj (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXY
 }
 
 Status
-loadWithPcl (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
+loadPcdOrPly (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
 {
-  if (const Status header = pcd ? detail::checkPcdHeader (path) : detail::checkPlyHeader (path); !header)
-    return header;
   pcl::PCLPointCloud2 blob;
   Eigen::Vector4f origin = Eigen::Vector4f::Zero ();
   Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity ();
-  const int rc = pcd ? pcl::io::loadPCDFile (path, blob, origin, orientation) : pcl::io::loadPLYFile (path, blob);
-  if (rc < 0)
-    return Status::error (path + ": not a readable " + std::string (pcd ? "PCD" : "PLY") + " file");
+  if (pcd)
+  {
+    if (const Status read = detail::readPcdFile (path, blob, origin, orientation); !read)
+      return read;
+  }
+  else
+  {
+    if (const Status header = detail::checkPlyHeader (path); !header)
+      return header;
+    if (pcl::io::loadPLYFile (path, blob) < 0)
+      return Status::error (path + ": not a readable PLY file");
+  }
   const Status read = detail::readPointFields (blob, path, cloud, &normals);
   if (!read)
     return read;
@@ -221,7 +229,7 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, 
   if (ext == "pcd" || ext == "ply")
   {
     in.close ();
-    status = loadWithPcl (path, ext == "pcd", cloud, normals);
+    status = loadPcdOrPly (path, ext == "pcd", cloud, normals);
   }
   else if (ext == "off")
     status = loadOff (path, in, cloud);
