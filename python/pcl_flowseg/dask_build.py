@@ -23,7 +23,7 @@ import os
 import sys
 import tempfile
 
-from ._pcl_flowseg import Database, defaults, list_shape_files, shape_label, signature_of_file
+from ._pcl_flowseg import Database, list_shape_files, shape_label, signature_of_file
 
 __all__ = ["build_database", "shard_signatures", "main"]
 
@@ -47,6 +47,15 @@ def shard_signatures(root, files, params):
             return shard.read(), failures
 
 
+def _check_keywords(params):
+    """Raises TypeError / ValueError for keywords signature_of_file would refuse, before any task
+    runs: the library checks them before it opens the (here empty) path."""
+    try:
+        signature_of_file("", **params)
+    except OSError:
+        pass
+
+
 def build_database(db_path, root, client, shard_size=25, replace=True, progress=None, **params):
     """Computes the signatures of every shape file below `root` on the Dask `client`'s workers and
     writes them to the database `db_path`.
@@ -62,10 +71,8 @@ def build_database(db_path, root, client, shard_size=25, replace=True, progress=
     unchanged."""
     if shard_size < 1:
         raise ValueError("shard_size: needs a whole number >= 1, got %r" % (shard_size,))
-    unknown = set(params) - set(defaults())
-    if unknown:
-        raise TypeError("unexpected keyword argument(s): " + ", ".join(sorted(unknown)))
     params.setdefault("threads", 1)
+    _check_keywords(params)
     files = list_shape_files(root)
     if not files:
         raise OSError("no shape files below " + root)

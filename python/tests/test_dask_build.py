@@ -48,6 +48,11 @@ def test_dask_build_adds_and_reports_failures(collection, tmp_path, client):
         build_database(db, str(tmp_path / "missing"), client)
     with pytest.raises(TypeError):
         build_database(db, str(collection), client, frobnicate=1)
+    with pytest.raises(TypeError):
+        build_database(db, str(collection), client, alignment_points=2)  # a matching keyword
+    with pytest.raises(ValueError, match="rho"):
+        build_database(db, str(collection), client, rho=-1)
+    assert "kept" in fs.Database.open(db)
     with pytest.raises(ValueError):
         build_database(db, str(collection), client, shard_size=0)
 

@@ -15,7 +15,8 @@
 namespace pcl_flowseg {
 
 /** \brief Reads the points of \a path into \a cloud, choosing the format by extension:
-  * - `.pcd`, `.ply`: PCL readers (fields x, y required; z = 0 when absent);
+  * - `.pcd`, `.ply` (fields x, y required; z = 0 when absent): ascii and binary PCD by a strict
+  *   reader of our own, binary_compressed PCD and PLY by PCL's readers after a header check;
   * - `.xyz`, `.txt`, `.csv`: one point per line, 2 or more numbers separated by white space or
   *   commas (x y [z], further columns ignored); `#` starts a comment;
   * - `.off`, `.obj`: the vertices of the mesh (faces are ignored).
