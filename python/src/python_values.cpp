@@ -45,7 +45,7 @@ toValue (const std::string& name, const py::handle& value)
     return value.cast<std::string> ();
   if (PyFloat_Check (value.ptr ()) || PyObject_HasAttrString (value.ptr (), "__float__"))
     return value.cast<double> ();
-  if (py::isinstance<py::sequence> (value) || py::isinstance<py::array> (value))
+  if ((py::isinstance<py::sequence> (value) && !py::isinstance<py::bytes> (value)) || py::isinstance<py::array> (value))
   {
     std::vector<double> numbers;
     for (const py::handle item : py::iter (value))
@@ -56,7 +56,7 @@ toValue (const std::string& name, const py::handle& value)
     }
     return numbers;
   }
-  throw py::type_error (name + ": unsupported type " + std::string (py::str (value.get_type ().attr ("__name__"))));
+  throw py::value_error (name + ": unsupported type " + std::string (py::str (value.get_type ().attr ("__name__"))));
 }
 
 py::object

@@ -21,7 +21,7 @@ namespace pcl_flowseg_python {
 
 namespace py = pybind11;
 
-/** \brief The keyword arguments of a call as the conversion layer's values; TypeError for a value
+/** \brief The keyword arguments of a call as the conversion layer's values; ValueError for a value
   * of no supported type. */
 Arguments
 argumentsFromKwargs (const py::kwargs& kwargs);

@@ -107,7 +107,7 @@ def test_bad_arrays_raise_value_error(array, message):
 BAD_PARAMETERS = [
     dict(rho=-1), dict(rho=float("nan")), dict(rho="big"), dict(rho=True), dict(threads=-1), dict(threads=1.5),
     dict(threads=10 ** 30), dict(threads=5000), dict(dimension="cubic"), dict(dimension=3), dict(viewpoint=(1, 2)), dict(viewpoint="up"),
-    dict(viewpoint=(0, 0, float("inf"))), dict(features="outside"), dict(denoising="maybe"), dict(separate=1),
+    dict(viewpoint=(0, 0, float("inf"))), dict(viewpoint=b"abc"), dict(viewpoint=[0, 0, "z"]), dict(rho=[1.0]), dict(features="outside"), dict(denoising="maybe"), dict(separate=1),
     dict(significance=1.5), dict(memory_limit=-5), dict(stump_ratio=0.5), dict(compact_size=-1),
 ]
 
