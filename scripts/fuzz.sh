@@ -30,7 +30,8 @@ run_target() {
   ASAN_OPTIONS=detect_leaks=0 "$build/fuzz/fuzz_$target" "$corpus" "$@" -timeout=20 -rss_limit_mb=4096 \
     -artifact_prefix="$crashes/" -print_final_stats=1 >"$log" 2>&1
 }
-# Executions of the ci mode's mutation run: about five seconds of each target on this machine.
+# Mutations of the ci mode's run beyond loading the corpus (libFuzzer's -runs counts both): about
+# five seconds of each target on this machine.
 ci_runs() {
   case $1 in
     segmentation) echo 300 ;;
@@ -52,7 +53,8 @@ for target in $targets; do
     rc=$?
     fresh="$build/corpus-ci/$target" # not the long runs' corpus: the ci run starts from the kept one
     rm -rf "$fresh" && mkdir -p "$fresh" && cp fuzz/corpus/$target/* "$fresh/" 2>/dev/null
-    [ "$rc" -eq 0 ] && { run_target "$target" "$fresh" "$crashes" "$log" -seed=1 -runs="$(ci_runs "$target")"; rc=$?; }
+    runs=$(( $(ls "$fresh" | wc -l) + $(ci_runs "$target") ))
+    [ "$rc" -eq 0 ] && { run_target "$target" "$fresh" "$crashes" "$log" -seed=1 -runs="$runs"; rc=$?; }
   elif [ "$seconds" -eq 0 ]; then
     run_target "$target" fuzz/corpus/$target "$crashes" "$log" -runs=0; rc=$?
   else
