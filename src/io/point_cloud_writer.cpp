@@ -16,13 +16,13 @@ namespace pcl_flowseg {
 
 namespace {
 
-/** The header PCL's ASCII writer writes, for fields x y z (and label). */
+/** The header PCL's ASCII writer writes for PointXYZL. */
 void
-asciiPcdHeader (OutputBuffer& out, std::uint32_t width, std::uint32_t height, const Eigen::Vector4f& origin,
-                const Eigen::Quaternionf& orientation, bool label)
+asciiLabelPcdHeader (OutputBuffer& out, std::uint32_t width, std::uint32_t height, const Eigen::Vector4f& origin,
+                     const Eigen::Quaternionf& orientation)
 {
   out.text ("# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\n")
-      .text (label ? "FIELDS x y z label\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n" : "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n")
+      .text ("FIELDS x y z label\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n")
       .text ("WIDTH ").integer (width).text ("\nHEIGHT ").integer (height).text ("\nVIEWPOINT ");
   for (int i = 0; i < 3; ++i)
     out.number (origin[i]).character (' ');
@@ -50,8 +50,8 @@ writeLabelCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZL>&
     return writeTextFileAtomically (path, [&] (std::ostream& stream) {
       OutputBuffer out (stream);
       const bool organised = static_cast<std::size_t> (labels.width) * labels.height == labels.size ();
-      asciiPcdHeader (out, organised ? labels.width : static_cast<std::uint32_t> (labels.size ()), organised ? labels.height : 1,
-                      labels.sensor_origin_, labels.sensor_orientation_, true);
+      asciiLabelPcdHeader (out, organised ? labels.width : static_cast<std::uint32_t> (labels.size ()), organised ? labels.height : 1,
+                           labels.sensor_origin_, labels.sensor_orientation_);
       for (const pcl::PointXYZL& p : labels)
       {
         coordinate (out, p.x);
