@@ -1,5 +1,5 @@
 /*
- * pcl_flowseg - internal: a PCD header checked before PCL's reader trusts it.
+ * pcl_flowseg - internal: a PCD header, parsed and checked before any data is read.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "io/pcd_header.h"
@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
@@ -174,13 +173,6 @@ parsePcdHeader (const std::string& path, std::istream& in, PcdHeader& h)
   return Status::success ();
 }
 
-Status
-checkPcdHeader (const std::string& path)
-{
-  std::ifstream in (path, std::ios::binary);
-  PcdHeader h;
-  return parsePcdHeader (path, in, h);
-}
 
 } // namespace detail
 } // namespace pcl_flowseg

@@ -1,5 +1,5 @@
 /*
- * pcl_flowseg - internal: a PCD header checked before PCL's reader trusts it.
+ * pcl_flowseg - internal: a PCD header, parsed and checked before any data is read.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #pragma once
@@ -14,7 +14,7 @@
 namespace pcl_flowseg {
 namespace detail {
 
-/** \brief A PCD header as checkPcdHeader accepts it. */
+/** \brief A PCD header as parsePcdHeader accepts it. */
 struct PcdHeader
 {
   std::vector<std::string> fields, sizes, types, counts;
@@ -24,19 +24,14 @@ struct PcdHeader
   long long point_bytes = 0;                          ///< bytes per point (binary record)
 };
 
-/** \brief Reads and checks the header of the PCD file open in \a in (see checkPcdHeader), leaving
-  * \a in at the first byte of the data. */
+/** \brief Reads the header of the PCD file open in \a in and checks it, leaving \a in at the first
+  * byte of the data. PCL's reader crashes or allocates terabytes on many malformed headers, so the
+  * header must follow the format strictly: ASCII text; known keywords, each once; VERSION 0.5 to
+  * 0.7 and 7 VIEWPOINT numbers; FIELDS, SIZE, TYPE and COUNT that agree, floats of 4 or 8 bytes;
+  * WIDTH, HEIGHT (at most 2e9 each) and POINTS present, consistent and not 0; points that fit in the
+  * available memory and, for binary data, in the file. */
 Status
 parsePcdHeader (const std::string& path, std::istream& in, PcdHeader& header);
-
-/** \brief Why the PCD file \a path must not be handed to PCL's reader, or success. PCL's reader
-  * crashes or allocates terabytes on many malformed headers, so the header must follow the format
-  * strictly: ASCII text; known keywords, each once; VERSION 0.5 to 0.7 and 7 VIEWPOINT numbers;
-  * FIELDS, SIZE, TYPE and COUNT that agree, floats of 4 or 8 bytes; WIDTH, HEIGHT (at most 2e9
-  * each) and POINTS present, consistent and not 0; points that fit in the available memory and,
-  * for binary data, in the file. */
-Status
-checkPcdHeader (const std::string& path);
 
 } // namespace detail
 } // namespace pcl_flowseg

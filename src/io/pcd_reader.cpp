@@ -102,15 +102,16 @@ readAsciiData (const std::string& path, std::istream& in, const PcdHeader& h, pc
 {
   const std::size_t points = static_cast<std::size_t> (h.points);
   blob.data.assign (points * blob.point_step, 0);
+  std::vector<int> sizes; // bytes per value of each field, decided once
+  for (const std::string& size : h.sizes)
+    sizes.push_back (std::atoi (size.c_str ()));
   std::size_t point = 0, line_number = 0;
   std::string line;
   const std::string at = path + ": data line ";
   while (std::getline (in, line))
   {
     ++line_number;
-    std::vector<char> text (line.begin (), line.end ());
-    text.push_back ('\0');
-    char* cursor = text.data ();
+    char* cursor = line.data (); // tokens are cut in place; the string ends in a null character
     auto nextToken = [&cursor] () -> const char* {
       while (*cursor == ' ' || *cursor == '\t' || *cursor == '\r')
         ++cursor;
@@ -131,7 +132,7 @@ readAsciiData (const std::string& path, std::istream& in, const PcdHeader& h, pc
     std::uint8_t* record = blob.data.data () + point * blob.point_step;
     for (std::size_t k = 0; k < blob.fields.size (); ++k)
     {
-      const int size = std::atoi (h.sizes[k].c_str ());
+      const int size = sizes[k];
       for (std::uint32_t c = 0; c < blob.fields[k].count; ++c, token = nextToken ())
         if (!token || !parseValue (token, h.types[k][0], size, record + blob.fields[k].offset + c * static_cast<std::uint32_t> (size)))
           return Status::error (at + std::to_string (line_number) + ": " + (token ? "'" + std::string (token).substr (0, 40) + "' is not" : "missing") +

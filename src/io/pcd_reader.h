@@ -19,7 +19,7 @@ namespace pcl_flowseg {
 namespace detail {
 
 /** \brief Reads the PCD file \a path into \a blob (fields, width, height, point_step, data) with its
-  * VIEWPOINT as \a origin and \a orientation. The header must pass checkPcdHeader; ascii data must
+  * VIEWPOINT as \a origin and \a orientation. The header must pass parsePcdHeader's checks; ascii data must
   * hold one point per line with one value per field element, each a number of the field's type
   * and range; binary data the bytes the header promises. Fails with the file's name (and the line,
   * for ascii data) otherwise. */
