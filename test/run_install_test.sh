@@ -37,7 +37,8 @@ fi
 package=$(find "$work/prefix" -path '*dist-packages/pcl_flowseg/__init__.py' | head -1)
 if [ -f "$build/python/pcl_flowseg/__init__.py" ]; then
   [ -n "$package" ] || { echo "FAILED: the Python package was built but not installed"; exit 1; }
-  PYTHONPATH=$(dirname "$(dirname "$package")") /usr/bin/python3 -c "
+  python=$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt") # the interpreter it was built for
+  PYTHONPATH=$(dirname "$(dirname "$package")") "${python:-/usr/bin/python3}" -c "
 import sys, pcl_flowseg as fs
 assert fs.__file__.startswith('$work/prefix'), fs.__file__
 seg = fs.segment(fs.read_points(sys.argv[1])[0])
