@@ -1,10 +1,12 @@
 /*
  * The fast paths of the core agree with the slow exact ones: the filtered flow predicate with
- * CGAL's exact predicate, the parallel triangulation with the sequential one.
+ * CGAL's exact predicate, the parallel triangulation with the sequential one, the greedy labelling's
+ * heap with an ordered set.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "core/delaunay/delaunay_cells.h"
 #include "core/delaunay/flow_predicate.h"
+#include "core/support/cell_heap.h"
 #include "core/support/parallel.h"
 #include "test_support.h"
 
@@ -14,6 +16,8 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <set>
+#include <utility>
 
 using namespace pcl_flowseg;
 using V = Eigen::Vector3d;
@@ -115,4 +119,43 @@ TEST (ParallelCore, ParallelInsertionGivesTheSequentialCells)
     ASSERT_EQ (sequential[k].vertices, parallel[k].vertices) << k;
     ASSERT_EQ (sequential[k].neighbors, parallel[k].neighbors) << k;
   }
+}
+
+TEST (CellHeap, PopsInTheOrderOfAnOrderedSetWhileKeysMove)
+{
+  // Keys rise and fall (ties are frequent: few distinct values), cells are inserted, moved and
+  // popped in random order; the heap must always give the set's largest (key, cell) pair.
+  constexpr int kCells = 2000;
+  std::mt19937 rng (11);
+  std::uniform_int_distribution<int> cell_of (0, kCells - 1), key_of (0, 40), action (0, 3);
+  core::CellHeap heap (kCells);
+  std::set<std::pair<double, int>> reference;
+  std::vector<double> key (kCells, -1.0);
+  std::vector<bool> popped (kCells, false);
+  int pops = 0;
+  for (int step = 0; step < 50000; ++step)
+  {
+    const int cell = cell_of (rng);
+    if (action (rng) > 0 && !popped[static_cast<std::size_t> (cell)])
+    {
+      reference.erase ({key[static_cast<std::size_t> (cell)], cell});
+      key[static_cast<std::size_t> (cell)] = key_of (rng) * 0.25;
+      reference.insert ({key[static_cast<std::size_t> (cell)], cell});
+      heap.update (cell, key[static_cast<std::size_t> (cell)]);
+      ASSERT_FALSE (heap.retired (cell));
+    }
+    else if (!reference.empty ())
+    {
+      ASSERT_FALSE (heap.empty ());
+      const int expected = std::prev (reference.end ())->second;
+      ASSERT_EQ (heap.top (), expected);
+      ASSERT_EQ (heap.pop (), expected);
+      reference.erase (std::prev (reference.end ()));
+      popped[static_cast<std::size_t> (expected)] = true;
+      ASSERT_TRUE (heap.retired (expected));
+      ++pops;
+    }
+    ASSERT_EQ (heap.empty (), reference.empty ());
+  }
+  EXPECT_GT (pops, 1000);
 }

@@ -30,8 +30,7 @@ class GreedyLabelling
 {
 public:
   GreedyLabelling (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension)
-    : vertices_ (vertices), cells_ (cells), d_ (dimension), f_ (dimension + 1), in_score_ (zeros (cells.size ())),
-      out_score_ (zeros (cells.size ())), margin_ (zeros (cells.size ())), label_ (cells.size (), -1), queue_ (margin_)
+    : vertices_ (vertices), cells_ (cells), d_ (dimension), f_ (dimension + 1), queue_ (cells.size ())
   {
     assignOnHugePages (centre_, cells.size (), Eigen::Vector3d (Eigen::Vector3d::Zero ()));
     parallelFor (cells.size (), [&] (std::size_t c) { centre_[c] = cellCircumcentre (vertices_, cells_[c], d_); });
@@ -87,35 +86,48 @@ public:
     return marked;
   }
 
-  /** The greedy pass: the most certain undecided cell takes its label and tells its neighbours. */
+  /** The greedy pass: the most certain undecided cell takes its label and tells its neighbours.
+    * A cell's evidence no longer changes once it is labelled, so its label is the side its evidence
+    * favours, read off at the end (a cell without any evidence is outside). */
   void
   propagate ()
   {
+    std::vector<Eigen::Vector3d> ().swap (centre_); // every use is behind: the memory is better free
     while (!queue_.empty ())
     {
       const std::size_t c = static_cast<std::size_t> (queue_.pop ());
-      label_[c] = out_score_[c] >= in_score_[c] ? 0 : 1;
+      const CellState& state = state_[c];
+      // The pass is bound by memory latency (cells are visited in margin order, all over memory):
+      // start loading the likely next cell and the neighbours before they are needed.
+      if (!queue_.empty ())
+        __builtin_prefetch (&state_[static_cast<std::size_t> (queue_.top ())]);
+      for (int i = 0; i < f_; ++i)
+        if (state.neighbors[static_cast<std::size_t> (i)] >= 0)
+          __builtin_prefetch (&state_[static_cast<std::size_t> (state.neighbors[static_cast<std::size_t> (i)])]);
+      const bool outside = isOutside (state);
       for (int i = 0; i < f_; ++i)
       {
-        const int nb = cells_[c].neighbors[i];
-        if (nb < 0 || label_[static_cast<std::size_t> (nb)] >= 0)
+        const int nb = state.neighbors[static_cast<std::size_t> (i)];
+        if (nb < 0 || queue_.retired (nb))
           continue;
-        const double s = agreement (c, i);
-        evidence (static_cast<std::size_t> (nb), (label_[c] == 0) == (s >= 0), std::abs (s));
+        const double s = state.agreement[static_cast<std::size_t> (i)];
+        evidence (static_cast<std::size_t> (nb), outside == (s >= 0), std::abs (s));
       }
     }
     for (std::size_t c = 0; c < cells_.size (); ++c)
-      cells_[c].inside = label_[c] < 0 ? 0 : label_[c];
+      cells_[c].inside = isOutside (state_[c]) ? 0 : 1;
   }
 
 private:
-  static std::vector<double>
-  zeros (std::size_t n)
+  /** What the greedy pass reads and writes for one cell, in one cache line: the pass visits cells
+    * in the order of their margins, all over memory, so each cell should cost one miss, not one
+    * per array. */
+  struct alignas (64) CellState
   {
-    std::vector<double> v;
-    assignOnHugePages (v, n, 0.0);
-    return v;
-  }
+    std::array<int, 4> neighbors;
+    std::array<double, 4> agreement; ///< see measureAgreement
+    double in_score, out_score;      ///< summed evidence for inside and outside
+  };
 
   /** Agreement across facet i of cell c: > 0 same side, < 0 opposite sides, |value| = confidence.
     * The cosine of the angle between the two spheres, measured at a facet vertex (on both) as the
@@ -148,32 +160,36 @@ private:
   measureAgreements ()
   {
     const std::unordered_set<std::uint64_t> crust = d_ == 2 ? nnCrust (vertices_, cells_) : std::unordered_set<std::uint64_t> ();
-    assignOnHugePages (agreement_, cells_.size ());
+    assignOnHugePages (state_, cells_.size ());
     parallelFor (cells_.size (), [&] (std::size_t c) {
+      CellState& state = state_[c];
+      state.neighbors = cells_[c].neighbors;
+      state.agreement = {{0.0, 0.0, 0.0, 0.0}};
       for (int i = 0; i < f_; ++i)
-        agreement_[c][static_cast<std::size_t> (i)] = measureAgreement (c, i, crust);
+        state.agreement[static_cast<std::size_t> (i)] = measureAgreement (c, i, crust);
+      state.in_score = state.out_score = 0.0;
     });
   }
 
-  double agreement (std::size_t c, int i) const { return agreement_[c][static_cast<std::size_t> (i)]; }
+  static bool isOutside (const CellState& state) { return state.out_score >= state.in_score; }
+
+  double agreement (std::size_t c, int i) const { return state_[c].agreement[static_cast<std::size_t> (i)]; }
 
   /** Evidence adds up: a cell hears every labelled neighbour, so one confident but wrong facet (a
     * flat cell's sphere) is outvoted. */
   void
   evidence (std::size_t c, bool outside, double weight)
   {
-    (outside ? out_score_[c] : in_score_[c]) += weight;
-    margin_[c] = std::abs (in_score_[c] - out_score_[c]);
-    queue_.update (static_cast<int> (c));
+    CellState& state = state_[c];
+    (outside ? state.out_score : state.in_score) += weight;
+    queue_.update (static_cast<int> (c), std::abs (state.in_score - state.out_score));
   }
 
   const std::vector<Eigen::Vector3d>& vertices_;
   std::vector<FlowCell>& cells_;
   const int d_, f_;
-  std::vector<double> in_score_, out_score_, margin_;
   std::vector<Eigen::Vector3d> centre_;
-  std::vector<std::array<double, 4>> agreement_;
-  std::vector<std::int8_t> label_;
+  std::vector<CellState> state_;
   CellHeap queue_; ///< undecided cells that have heard evidence, largest margin first
 };
 

@@ -6,48 +6,57 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <utility>
 #include <vector>
 
 namespace pcl_flowseg {
 namespace core {
 
 /** \brief A 4-ary heap of cells ordered by key (highest first; equal keys: higher cell index first), each cell at
-  * most once. Keys live in the caller's vector and may move up or down: update() restores the order
-  * after a change. Unlike a priority queue with stale copies, the heap never holds more than the
-  * cells waiting, and every update is O(log waiting). */
+  * most once, and only until it is popped: a popped cell is retired and may not come back. A key may move up or down: update() repositions the cell. Unlike a priority queue with
+  * stale copies, the heap never holds more than the cells waiting, and every update is O(log waiting).
+  * Each entry carries its key, so comparing the four children of a node reads one cache line instead
+  * of four scattered keys. */
 class CellHeap
 {
 public:
-  CellHeap (const std::vector<double>& keys) : keys_ (keys), position_ (keys.size (), -1) {}
+  /** A heap for cells 0 .. \a cell_count - 1. */
+  explicit CellHeap (std::size_t cell_count) : position_ (cell_count, -1) {}
 
   bool empty () const { return heap_.empty (); }
 
-  /** Inserts \a cell, or repositions it after its key changed. */
+  /** Whether \a cell has been popped. */
+  bool retired (int cell) const { return position_[static_cast<std::size_t> (cell)] == kRetired; }
+
+  /** Inserts \a cell with \a key, or repositions it under its new \a key. \a cell must not be retired. */
   void
-  update (int cell)
+  update (int cell, double key)
   {
     int& at = position_[static_cast<std::size_t> (cell)];
     if (at < 0)
     {
       at = static_cast<int> (heap_.size ());
-      heap_.push_back (cell);
+      heap_.push_back ({key, cell});
     }
+    else
+      heap_[static_cast<std::size_t> (at)].key = key;
     siftDown (siftUp (at));
   }
+
+  /** The cell with the highest key, without removing it. */
+  int top () const { return heap_.front ().cell; }
 
   /** Removes and returns the cell with the highest key. */
   int
   pop ()
   {
-    const int top = heap_.front ();
-    position_[static_cast<std::size_t> (top)] = -1;
-    const int last = heap_.back ();
+    const int top = heap_.front ().cell;
+    position_[static_cast<std::size_t> (top)] = kRetired;
+    const Entry last = heap_.back ();
     heap_.pop_back ();
     if (!heap_.empty ())
     {
       heap_[0] = last;
-      position_[static_cast<std::size_t> (last)] = 0;
+      position_[static_cast<std::size_t> (last.cell)] = 0;
       siftDown (0);
     }
     return top;
@@ -55,34 +64,40 @@ public:
 
 private:
   static constexpr int kArity = 4; // shallower than binary: fewer cache misses per operation
+  static constexpr int kRetired = -2; ///< position of a popped cell (-1: never inserted)
 
-  bool
-  above (int a, int b) const
+  struct Entry
   {
-    const double ka = keys_[static_cast<std::size_t> (a)], kb = keys_[static_cast<std::size_t> (b)];
-    return ka != kb ? ka > kb : a > b;
+    double key;
+    int cell;
+  };
+
+  static bool
+  above (const Entry& a, const Entry& b)
+  {
+    return a.key != b.key ? a.key > b.key : a.cell > b.cell;
   }
 
   void
-  place (int at, int cell)
+  place (int at, const Entry& entry)
   {
-    heap_[static_cast<std::size_t> (at)] = cell;
-    position_[static_cast<std::size_t> (cell)] = at;
+    heap_[static_cast<std::size_t> (at)] = entry;
+    position_[static_cast<std::size_t> (entry.cell)] = at;
   }
 
   int
   siftUp (int at)
   {
-    const int cell = heap_[static_cast<std::size_t> (at)];
+    const Entry entry = heap_[static_cast<std::size_t> (at)];
     while (at > 0)
     {
       const int parent = (at - 1) / kArity;
-      if (!above (cell, heap_[static_cast<std::size_t> (parent)]))
+      if (!above (entry, heap_[static_cast<std::size_t> (parent)]))
         break;
       place (at, heap_[static_cast<std::size_t> (parent)]);
       at = parent;
     }
-    place (at, cell);
+    place (at, entry);
     return at;
   }
 
@@ -90,7 +105,7 @@ private:
   siftDown (int at)
   {
     const int n = static_cast<int> (heap_.size ());
-    const int cell = heap_[static_cast<std::size_t> (at)];
+    const Entry entry = heap_[static_cast<std::size_t> (at)];
     for (;;)
     {
       const int first_child = kArity * at + 1;
@@ -100,16 +115,15 @@ private:
       for (int k = first_child + 1; k < std::min (n, first_child + kArity); ++k)
         if (above (heap_[static_cast<std::size_t> (k)], heap_[static_cast<std::size_t> (child)]))
           child = k;
-      if (!above (heap_[static_cast<std::size_t> (child)], cell))
+      if (!above (heap_[static_cast<std::size_t> (child)], entry))
         break;
       place (at, heap_[static_cast<std::size_t> (child)]);
       at = child;
     }
-    place (at, cell);
+    place (at, entry);
   }
 
-  const std::vector<double>& keys_;
-  std::vector<int> heap_;
+  std::vector<Entry> heap_;
   std::vector<int> position_;
 };
 
