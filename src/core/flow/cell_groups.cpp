@@ -5,6 +5,7 @@
 #include "core/flow/cell_groups.h"
 
 #include "core/geometry/cell_geometry.h"
+#include "core/support/parallel.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -32,12 +33,17 @@ summariseCells (const std::vector<FlowCell>& cells, const std::vector<int>& grou
   return groups;
 }
 
-std::vector<SaddleFacet>
-highestSharedFacets (const FlowResult& result, const std::vector<int>& group_of_cell)
+namespace {
+using SaddlesByPair = std::unordered_map<std::uint64_t, SaddleFacet>;
+
+/** The highest facet between each pair of groups among the facets of cells [begin, end), each
+  * facet seen from its lower cell; on equal heights the first found. */
+void
+collectSaddles (const FlowResult& result, const std::vector<int>& group_of_cell, std::size_t begin, std::size_t end,
+                SaddlesByPair& best)
 {
   const int facets = result.dimension + 1;
-  std::unordered_map<std::uint64_t, SaddleFacet> best;
-  for (std::size_t c = 0; c < result.cells.size (); ++c)
+  for (std::size_t c = begin; c < end; ++c)
   {
     const FlowCell& cell = result.cells[c];
     for (int i = 0; i < facets; ++i)
@@ -68,6 +74,25 @@ highestSharedFacets (const FlowResult& result, const std::vector<int>& group_of_
       best[key] = s;
     }
   }
+}
+} // namespace
+
+std::vector<SaddleFacet>
+highestSharedFacets (const FlowResult& result, const std::vector<int>& group_of_cell)
+{
+  std::vector<SaddlesByPair> parts = gatherInChunks<SaddlesByPair> (
+    result.cells.size (), [&] (std::size_t begin, std::size_t end, SaddlesByPair& best) {
+      collectSaddles (result, group_of_cell, begin, end, best);
+    });
+  // Later chunks hold later cells: they win only where one pass would have let them win.
+  SaddlesByPair& best = parts.front ();
+  for (std::size_t k = 1; k < parts.size (); ++k)
+    for (auto& kv : parts[k])
+    {
+      const auto [it, inserted] = best.insert (kv);
+      if (!inserted && !(it->second.squared_radius >= kv.second.squared_radius))
+        it->second = kv.second;
+    }
   std::vector<SaddleFacet> out;
   out.reserve (best.size ());
   for (auto& kv : best)

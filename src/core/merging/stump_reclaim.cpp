@@ -5,6 +5,7 @@
 #include "core/merging/stump_reclaim.h"
 
 #include "core/flow/cell_groups.h"
+#include "core/support/parallel.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -71,19 +72,25 @@ reclaimStumps (const FlowResult& result, const std::vector<double>& height, doub
     return h <= hx && s != saddle.end () && h >= floor2 * s->second;
   };
   // Lowest cells first (ties: lower cell, then lower group): a deterministic flood from every
-  // boundary between a thin and a thick group at once.
+  // boundary between a thin and a thick group at once. The seeds are gathered in parallel; the
+  // queue's order is total, so the order they are gathered in does not matter.
   using Entry = std::pair<double, std::pair<int, int>>; // cell height, (cell, thin group)
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  for (std::size_t c = 0; c < n; ++c)
-    for (int i = 0; i < facets; ++i)
-    {
-      const int nb = result.cells[c].neighbors[i];
-      if (nb < 0 || result.cells[static_cast<std::size_t> (nb)].inside != result.cells[c].inside)
-        continue;
-      const int x = original[static_cast<std::size_t> (nb)];
-      if (takes (x, c))
-        queue.emplace (result.cells[c].squared_radius, std::make_pair (static_cast<int> (c), x));
-    }
+  std::vector<std::vector<Entry>> seeds = gatherInChunks<std::vector<Entry>> (
+    n, [&] (std::size_t begin, std::size_t end, std::vector<Entry>& found) {
+      for (std::size_t c = begin; c < end; ++c)
+        for (int i = 0; i < facets; ++i)
+        {
+          const int nb = result.cells[c].neighbors[i];
+          if (nb < 0 || result.cells[static_cast<std::size_t> (nb)].inside != result.cells[c].inside)
+            continue;
+          const int x = original[static_cast<std::size_t> (nb)];
+          if (takes (x, c))
+            found.emplace_back (result.cells[c].squared_radius, std::make_pair (static_cast<int> (c), x));
+        }
+    });
+  for (std::size_t k = 1; k < seeds.size (); ++k)
+    seeds.front ().insert (seeds.front ().end (), seeds[k].begin (), seeds[k].end ());
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue (std::greater<Entry> (), std::move (seeds.front ()));
   std::vector<char> taken (n, 0);
   while (!queue.empty ())
   {

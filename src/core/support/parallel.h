@@ -10,8 +10,10 @@
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 namespace pcl_flowseg {
 namespace core {
@@ -54,6 +56,22 @@ parallelFor (std::size_t n, const Body& body)
     for (std::size_t i = r.begin (); i != r.end (); ++i)
       body (i);
   });
+}
+
+/** \brief Splits [0, n) into one contiguous chunk per worker, calls \a body (begin, end, result) for
+  * each in parallel, and returns the chunks' results in index order. For loops that gather: the
+  * caller combines the results in that order, so the outcome is the sequential loop's. */
+template <class Result, class Body>
+std::vector<Result>
+gatherInChunks (std::size_t n, const Body& body)
+{
+  const std::size_t chunks = n < 4096 ? 1 : std::max<std::size_t> (1, workerThreads ());
+  std::vector<Result> results (chunks);
+  if (chunks == 1)
+    body (std::size_t (0), n, results[0]);
+  else
+    tbb::parallel_for (std::size_t (0), chunks, [&] (std::size_t k) { body (n * k / chunks, n * (k + 1) / chunks, results[k]); });
+  return results;
 }
 
 /** \brief Runs \a first and \a second, at the same time when two workers are allowed. They must
