@@ -37,6 +37,8 @@ struct FlowCell
   std::uint8_t flow_mask = 0;
   /** Index of the facet (0..d) the strengthened flow keeps, or -1 for a maximum. */
   std::int8_t successor_facet = -1;
+  /** Interior/exterior label: 1 inside the shape, 0 outside, -1 not computed. */
+  std::int8_t inside = -1; // beside the other bytes: a FlowCell is 88 bytes, not 96
   /** Squared circumradius (the height of the cell's Voronoi vertex). */
   double squared_radius = 0.0;
   /** Area (2D) or volume (3D). */
@@ -47,8 +49,6 @@ struct FlowCell
   int manifold = -1;
   /** Segment (after merging) the cell belongs to: index into FlowResult::segments. */
   int segment = -1;
-  /** Interior/exterior label: 1 inside the shape, 0 outside, -1 not computed. */
-  std::int8_t inside = -1;
 };
 
 /** \brief A maximum of the distance function: a cell that contains its own circumcentre. */

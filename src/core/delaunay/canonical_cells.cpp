@@ -33,28 +33,38 @@ canonicalVertexOrder (std::array<int, 4>& vertices, int f, std::array<int, 4>& s
   }
 }
 
+void
+orientCanonically (CellLinks& cell, int f)
+{
+  std::array<int, 4> slot;
+  canonicalVertexOrder (cell.vertices, f, slot);
+  const std::array<int, 4> neighbors = cell.neighbors;
+  for (int i = 0; i < f; ++i)
+    cell.neighbors[static_cast<std::size_t> (i)] = neighbors[static_cast<std::size_t> (slot[static_cast<std::size_t> (i)])];
+}
+
 std::vector<int>
-canonicalCellOrder (const std::vector<std::array<int, 4>>& tuples, int f)
+canonicalCellOrder (const std::vector<CellLinks>& cells, int f)
 {
   // Bucket by the first vertex (counting sort), then sort each bucket by the rest.
-  const std::size_t n = tuples.size ();
+  const std::size_t n = cells.size ();
   int max_vertex = -1;
-  for (const auto& t : tuples)
-    max_vertex = std::max (max_vertex, t[0]);
+  for (const CellLinks& c : cells)
+    max_vertex = std::max (max_vertex, c.vertices[0]);
   std::vector<std::size_t> first (static_cast<std::size_t> (max_vertex) + 2, 0);
-  for (const auto& t : tuples)
-    ++first[static_cast<std::size_t> (t[0]) + 1];
+  for (const CellLinks& c : cells)
+    ++first[static_cast<std::size_t> (c.vertices[0]) + 1];
   std::partial_sum (first.begin (), first.end (), first.begin ());
   std::vector<int> order;
   assignOnHugePages (order, n);
   {
     std::vector<std::size_t> fill (first.begin (), first.end () - 1);
     for (std::size_t k = 0; k < n; ++k)
-      order[fill[static_cast<std::size_t> (tuples[k][0])]++] = static_cast<int> (k);
+      order[fill[static_cast<std::size_t> (cells[k].vertices[0])]++] = static_cast<int> (k);
   }
   const auto less = [&] (int a, int b) {
-    const auto& ta = tuples[static_cast<std::size_t> (a)];
-    const auto& tb = tuples[static_cast<std::size_t> (b)];
+    const auto& ta = cells[static_cast<std::size_t> (a)].vertices;
+    const auto& tb = cells[static_cast<std::size_t> (b)].vertices;
     return std::lexicographical_compare (ta.begin () + 1, ta.begin () + f, tb.begin () + 1, tb.begin () + f);
   };
   parallelFor (first.size () - 1, [&] (std::size_t v) {
@@ -64,36 +74,23 @@ canonicalCellOrder (const std::vector<std::array<int, 4>>& tuples, int f)
 }
 
 void
-putInCanonicalOrder (std::vector<FlowCell>& cells, int dimension)
+buildCellsInCanonicalOrder (std::vector<CellLinks>&& cells, int dimension, std::vector<FlowCell>& flow_cells)
 {
   const int f = dimension + 1;
   const std::size_t n = cells.size ();
-  std::vector<std::array<int, 4>> tuples;
-  assignOnHugePages (tuples, n);
-  parallelFor (n, [&] (std::size_t k) {
-    FlowCell& c = cells[k];
-    std::array<int, 4> slot;
-    canonicalVertexOrder (c.vertices, f, slot);
-    const auto neighbors = c.neighbors;
-    for (int i = 0; i < f; ++i)
-      c.neighbors[static_cast<std::size_t> (i)] = neighbors[static_cast<std::size_t> (slot[static_cast<std::size_t> (i)])];
-    tuples[k] = c.vertices;
-  });
-  const std::vector<int> order = canonicalCellOrder (tuples, f);
+  const std::vector<int> order = canonicalCellOrder (cells, f);
   std::vector<int> position;
   assignOnHugePages (position, n);
-  for (std::size_t k = 0; k < n; ++k)
-    position[static_cast<std::size_t> (order[k])] = static_cast<int> (k);
-  std::vector<FlowCell> sorted;
-  assignOnHugePages (sorted, n);
+  parallelFor (n, [&] (std::size_t k) { position[static_cast<std::size_t> (order[k])] = static_cast<int> (k); });
+  assignOnHugePages (flow_cells, n);
   parallelFor (n, [&] (std::size_t k) {
-    FlowCell c = cells[static_cast<std::size_t> (order[k])];
+    const CellLinks& c = cells[static_cast<std::size_t> (order[k])];
+    FlowCell& out = flow_cells[k];
+    out.vertices = c.vertices;
     for (int i = 0; i < f; ++i)
-      if (c.neighbors[i] != kInfiniteCell)
-        c.neighbors[i] = position[static_cast<std::size_t> (c.neighbors[i])];
-    sorted[k] = c;
+      out.neighbors[i] = c.neighbors[i] == kInfiniteCell ? kInfiniteCell : position[static_cast<std::size_t> (c.neighbors[i])];
   });
-  cells.swap (sorted);
+  std::vector<CellLinks> ().swap (cells);
 }
 
 } // namespace core

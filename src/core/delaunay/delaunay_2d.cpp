@@ -46,18 +46,19 @@ triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>
   int next = 0;
   for (auto f = dt.finite_faces_begin (); f != dt.finite_faces_end (); ++f)
     f->info () = next++;
-  cells.resize (static_cast<std::size_t> (next));
+  std::vector<CellLinks> links (static_cast<std::size_t> (next));
   for (auto f = dt.finite_faces_begin (); f != dt.finite_faces_end (); ++f)
   {
-    FlowCell& cell = cells[static_cast<std::size_t> (f->info ())];
+    CellLinks& cell = links[static_cast<std::size_t> (f->info ())];
     for (int i = 0; i < 3; ++i)
     {
-      cell.vertices[i] = f->vertex (i)->info ();
+      cell.vertices[static_cast<std::size_t> (i)] = f->vertex (i)->info ();
       const auto nb = f->neighbor (i);
-      cell.neighbors[i] = dt.is_infinite (nb) ? kInfiniteCell : nb->info ();
+      cell.neighbors[static_cast<std::size_t> (i)] = dt.is_infinite (nb) ? kInfiniteCell : nb->info ();
     }
+    orientCanonically (cell, 3);
   }
-  putInCanonicalOrder (cells, 2);
+  buildCellsInCanonicalOrder (std::move (links), 2, cells);
   return Status::success ();
 }
 

@@ -39,39 +39,34 @@ struct Triangulation3
   using Type = CGAL::Delaunay_triangulation_3<Kernel, DataStructure>;
 };
 
-/** The finite cells as FlowCells in canonical order (canonical_cells.h), built in one pass: no
-  * intermediate copy of the cells (on virtual machines the first write to fresh memory is costly). */
+/** The finite cells of \a dt, oriented canonically, neighbours by their index here. Only a third
+  * of the size of the FlowCells, so that the triangulation can be released before those are built
+  * (the two together are the peak of memory otherwise). */
 template <class Delaunay>
-void
-extractCells (Delaunay& dt, std::vector<FlowCell>& cells)
+std::vector<CellLinks>
+extractLinks (Delaunay& dt)
 {
   std::vector<typename Delaunay::Cell_handle> handles;
   handles.reserve (dt.number_of_finite_cells ());
   adviseHugePages (handles.data (), handles.capacity () * sizeof (handles[0]));
   for (auto c = dt.finite_cells_begin (); c != dt.finite_cells_end (); ++c)
+  {
+    c->info () = static_cast<int> (handles.size ());
     handles.push_back (c);
-  const std::size_t n = handles.size ();
-  std::vector<std::array<int, 4>> tuples, slots;
-  assignOnHugePages (tuples, n);
-  assignOnHugePages (slots, n);
-  parallelFor (n, [&] (std::size_t k) {
+  }
+  std::vector<CellLinks> links;
+  assignOnHugePages (links, handles.size ());
+  parallelFor (handles.size (), [&] (std::size_t k) {
+    CellLinks& cell = links[k];
     for (int i = 0; i < 4; ++i)
-      tuples[k][static_cast<std::size_t> (i)] = handles[k]->vertex (i)->info ();
-    canonicalVertexOrder (tuples[k], 4, slots[k]);
-  });
-  const std::vector<int> order = canonicalCellOrder (tuples, 4);
-  parallelFor (n, [&] (std::size_t p) { handles[static_cast<std::size_t> (order[p])]->info () = static_cast<int> (p); });
-  assignOnHugePages (cells, n);
-  parallelFor (n, [&] (std::size_t p) {
-    const std::size_t k = static_cast<std::size_t> (order[p]);
-    FlowCell& cell = cells[p];
-    cell.vertices = tuples[k];
-    for (std::size_t i = 0; i < 4; ++i)
     {
-      const auto nb = handles[k]->neighbor (slots[k][i]);
-      cell.neighbors[i] = dt.is_infinite (nb) ? kInfiniteCell : nb->info ();
+      cell.vertices[static_cast<std::size_t> (i)] = handles[k]->vertex (i)->info ();
+      const auto nb = handles[k]->neighbor (i);
+      cell.neighbors[static_cast<std::size_t> (i)] = dt.is_infinite (nb) ? kInfiniteCell : nb->info ();
     }
+    orientCanonically (cell, 4);
   });
+  return links;
 }
 
 template <class Concurrency>
@@ -85,6 +80,7 @@ triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCel
     input.emplace_back (Point3 (points[i].x (), points[i].y (), points[i].z ()), static_cast<int> (i));
 
   int dimension;
+  std::vector<CellLinks> links;
   if constexpr (std::is_same<Concurrency, CGAL::Parallel_tag>::value)
   {
     CGAL::Bbox_3 box;
@@ -95,7 +91,7 @@ triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCel
     dt.insert (input.begin (), input.end ()); // parallel, spatially sorted insertion
     dimension = dt.dimension ();
     if (dimension == 3)
-      extractCells (dt, cells);
+      links = extractLinks (dt);
   }
   else
   {
@@ -103,11 +99,13 @@ triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCel
     dt.insert (input.begin (), input.end ()); // spatially sorted insertion
     dimension = dt.dimension ();
     if (dimension == 3)
-      extractCells (dt, cells);
+      links = extractLinks (dt);
   }
   if (dimension < 3)
     return Status::error (dimension == 2 ? "all points are coplanar: use 2D mode (dimension 2) for planar input"
                                          : "all points are collinear: a 3D triangulation needs 4 points not on one plane");
+  std::vector<std::pair<Point3, int>> ().swap (input);
+  buildCellsInCanonicalOrder (std::move (links), 3, cells); // the triangulation is gone by now
   return Status::success ();
 }
 
