@@ -8,6 +8,7 @@
 #include "core/delaunay/flow_predicate.h"
 #include "core/support/huge_pages.h"
 #include "core/support/parallel.h"
+#include "core/support/system_load.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
@@ -110,16 +111,20 @@ triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCel
 }
 
 /** True when CGAL's parallel insertion should run: two or more workers allowed, a few thousand
-  * points at least, and a core to spare by the system's 1-minute load average. Its threads spin on
-  * cell locks; when they must share cores with other busy processes they wait out each other's
-  * time slices, which can cost several times the sequential time (docs/method.md). The result is
-  * the same either way (canonical order). */
+  * points at least, and a core to spare from other processes right now. Its threads spin on cell
+  * locks; when they must share cores with other busy processes they wait out each other's time
+  * slices, which can cost several times the sequential time (docs/method.md). The result is the
+  * same either way (canonical order). Where /proc cannot be read, the 1-minute load average. */
 bool
 parallelTriangulationPays (std::size_t points)
 {
   const std::size_t workers = workerThreads ();
   if (workers < 2 || points < 5000)
     return false;
+  const int cores = static_cast<int> (std::max (1u, std::thread::hardware_concurrency ()));
+  const int others = otherRunnableThreads ();
+  if (others >= 0)
+    return others <= cores - 2; // this thread and one more have a core each
   double load = 0.0;
   if (std::FILE* f = std::fopen ("/proc/loadavg", "r"))
   {
@@ -127,7 +132,6 @@ parallelTriangulationPays (std::size_t points)
       load = 0.0;
     std::fclose (f);
   }
-  const double cores = static_cast<double> (std::max (1u, std::thread::hardware_concurrency ()));
   return load < cores - 0.5;
 }
 } // namespace

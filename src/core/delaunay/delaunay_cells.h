@@ -14,7 +14,7 @@ namespace pcl_flowseg {
 namespace core {
 
 /** \brief Triangulates 2D points (CGAL, exact predicates) into \a cells: vertices and neighbors
-  * only, in canonical order (putInCanonicalOrder). Fails when the points do not span the plane
+  * only, in canonical order (buildCellsInCanonicalOrder). Fails when the points do not span the plane
   * (fewer than 3 or all collinear). Points must be distinct. */
 Status
 triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells);
@@ -28,8 +28,8 @@ enum class Insertion
 };
 
 /** \brief Triangulates 3D points into tetrahedra (vertices and neighbors, canonical order); in
-  * parallel (CGAL with TBB) when workerThreads() > 1, the input is large enough and the system's
-  * load leaves a core to spare. Fails when the points do not span space (fewer than 4, collinear
+  * parallel (CGAL with TBB) when workerThreads() > 1, the input is large enough and other
+  * processes leave a core to spare (otherRunnableThreads). Fails when the points do not span space (fewer than 4, collinear
   * or coplanar). Points must be distinct. */
 Status
 triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells,
