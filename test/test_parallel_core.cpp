@@ -8,6 +8,7 @@
 #include "core/delaunay/flow_predicate.h"
 #include "core/support/cell_heap.h"
 #include "core/support/parallel.h"
+#include "core/support/system_load.h"
 #include "test_support.h"
 
 #include <pcl_flowseg/evaluation/shape_generator.h>
@@ -15,7 +16,13 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
 #include <random>
+#include <thread>
 #include <set>
 #include <utility>
 
@@ -158,4 +165,23 @@ TEST (CellHeap, PopsInTheOrderOfAnOrderedSetWhileKeysMove)
     ASSERT_EQ (heap.empty (), reference.empty ());
   }
   EXPECT_GT (pops, 1000);
+}
+
+TEST (SystemLoad, SeesABusyProcess)
+{
+  if (core::otherRunnableThreads () < 0)
+    GTEST_SKIP () << "/proc cannot be read here";
+  const pid_t busy = fork ();
+  ASSERT_GE (busy, 0);
+  if (busy == 0)
+  {
+    volatile unsigned long spin = 0;
+    for (;;) // a process that always wants a core
+      spin = spin + 1;
+  }
+  std::this_thread::sleep_for (std::chrono::milliseconds (50));
+  const int with_busy_process = core::otherRunnableThreads ();
+  kill (busy, SIGKILL);
+  waitpid (busy, nullptr, 0);
+  EXPECT_GE (with_busy_process, 1);
 }
