@@ -119,6 +119,8 @@ expect "sampler missing mesh" 1 "cannot open" -- "$smp" "$work/none.off" -o "$wo
 expect "sampler bad count" 2 "points" -- "$smp" "$work/tet.off" -n 0 -o "$work/x.pcd"
 expect "sampler bad noise" 2 "noise" -- "$smp" "$work/tet.off" --noise -1 -o "$work/x.pcd"
 expect "sampler no output" 2 "output" -- "$smp" "$work/tet.off"
+expect "sampler output not PCD" 1 "written as PCD" -- "$smp" "$work/tet.off" -o "$work/tet.xyz"
+[ ! -e "$work/tet.xyz" ]; check "no file under a non-PCD name" $?
 printf 'P2\n5 5\n255\n255 255 255 255 255\n255 0 0 0 255\n255 0 0 0 255\n255 0 0 0 255\n255 255 255 255 255\n' > "$work/square.pgm"
 expect "sample a silhouette image" 0 "silhouette boundary" -- "$smp" "$work/square.pgm" -o "$work/square.pcd"
 [ "$(grep -m1 '^POINTS' "$work/square.pcd" | awk '{print $2}')" = "12" ]; check "a 3x3 square has 12 boundary edge midpoints" $?

@@ -217,6 +217,11 @@ TEST (ResultWriter, WritesAreAtomic)
   EXPECT_FALSE (thrown.ok);
   EXPECT_FALSE (exists (target));
   EXPECT_FALSE (writePointCloud (dir.file ("no/such/dir/x.pcd"), pcl::PointCloud<pcl::PointXYZ> (), false).ok);
+  pcl::PointCloud<pcl::PointXYZ> one;
+  one.push_back (pcl::PointXYZ (1.0f, 2.0f, 3.0f));
+  EXPECT_FALSE (writePointCloud (dir.file ("x.xyz"), one, false).ok); // PCD content, another format's name
+  EXPECT_FALSE (exists (dir.file ("x.xyz")));
+  EXPECT_TRUE (writePointCloud (dir.file ("x.PCD"), one, false).ok);
 }
 
 TEST (ResultWriter, SegmentationOutputsAreWellFormed)

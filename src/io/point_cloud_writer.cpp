@@ -6,6 +6,7 @@
 
 #include <pcl_flowseg/io/atomic_file.h>
 
+#include "io/file_extension.h"
 #include "io/output_buffer.h"
 
 #include <pcl/io/pcd_io.h>
@@ -69,6 +70,8 @@ writeLabelCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZL>&
 Status
 writePointCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZ>& cloud, bool binary)
 {
+  if (detail::lowerExtension (path) != "pcd") // PCD content under another name would be misread later
+    return Status::error ("cannot write " + path + ": point clouds are written as PCD, give the file a .pcd name");
   return writeFileAtomically (path, [&] (const std::string& tmp) {
     pcl::PCDWriter writer;
     const int rc = binary ? writer.writeBinary (tmp, cloud) : writer.writeASCII (tmp, cloud, 7);

@@ -17,7 +17,8 @@ namespace pcl_flowseg {
 Status
 writeLabelCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZL>& labels, bool binary);
 
-/** \brief Writes a plain point cloud as PCD (ASCII or binary). Atomic. */
+/** \brief Writes a plain point cloud as PCD (ASCII or binary). Atomic. Fails for a \a path that
+  * does not end in .pcd (any case). */
 Status
 writePointCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZ>& cloud, bool binary);
 
