@@ -8,6 +8,7 @@
 #include "core/delaunay/delaunay_cells.h"
 #include "core/flow/manifold_summary.h"
 #include "core/flow/stable_manifolds.h"
+#include "core/interior/facet_agreement.h"
 #include "core/interior/interior_labelling.h"
 #include "core/labels/point_labels.h"
 #include "core/merging/manifold_merging.h"
@@ -149,15 +150,16 @@ vertexNormals (const Run& run)
   return normals;
 }
 
-/** Interior/exterior labelling of the cells (writes cells' inside flags and result.warnings). */
+/** Interior/exterior labelling of the cells (writes cells' inside flags and result.warnings), on
+  * \a agreements measured ahead in \a measured_ms (none: measured here when needed). */
 void
-interiorStage (const Run& run)
+interiorStage (const Run& run, std::vector<core::GreedyCell>&& agreements, double measured_ms)
 {
   if (!run.params.interior.separate)
     return;
   const auto start = Clock::now ();
   FlowResult& result = run.result;
-  core::labelInterior (result, run.params.interior, vertexNormals (run));
+  core::labelInterior (result, run.params.interior, vertexNormals (run), std::move (agreements));
   const InteriorReport& in = result.interior;
   if (!in.closed)
     result.warnings.push_back ("the interior/exterior boundary is not closed");
@@ -167,18 +169,26 @@ interiorStage (const Run& run)
                                " non-manifold vertex(es)");
   if (in.inside_cells == 0)
     result.warnings.push_back ("no cell was labelled inside: the sample may not enclose a volume (open scan, hole?)");
-  result.timings.interior_ms = millisecondsSince (start);
+  result.timings.interior_ms = measured_ms + millisecondsSince (start);
 }
 
 /** The stable manifolds and the interior read the same cells and write different fields of them:
-  * they run side by side. Warnings come in stage order whatever the timing. */
+  * they run side by side, after the interior's parallel part (the facet agreements) has had all
+  * cores. Warnings come in stage order whatever the timing. */
 void
 manifoldsAndInteriorStage (const Run& run)
 {
   run.report (run.params.interior.separate ? "manifolds and interior" : "manifolds", 0.6);
+  const InteriorParameters& interior = run.params.interior;
+  const auto start = Clock::now ();
+  std::vector<core::GreedyCell> agreements;
+  if (interior.separate && interior.denoising != Denoising::Always)
+    agreements = core::measureFacetAgreements (run.result.vertices, run.result.cells, run.result.dimension);
+  const double measured_ms = millisecondsSince (start);
   std::vector<std::string> manifold_warnings;
   const std::size_t earlier_warnings = run.result.warnings.size ();
-  core::runSideBySide ([&] () { manifoldStage (run.result, manifold_warnings); }, [&] () { interiorStage (run); });
+  core::runSideBySide ([&] () { manifoldStage (run.result, manifold_warnings); },
+                       [&] () { interiorStage (run, std::move (agreements), measured_ms); });
   run.result.warnings.insert (run.result.warnings.begin () + static_cast<std::ptrdiff_t> (earlier_warnings),
                               manifold_warnings.begin (), manifold_warnings.end ());
 }

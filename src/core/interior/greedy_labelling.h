@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include "core/interior/facet_agreement.h"
+
 #include <pcl_flowseg/common/flow_parameters.h>
 #include <pcl_flowseg/common/flow_result.h>
 
@@ -14,10 +16,10 @@ namespace core {
 
 /** \brief Sets FlowCell::inside of every cell of \a cells (a triangulation of \a vertices).
   *
-  * Evidence lives on facets: the cosine of the angle between the circumspheres of the two cells
-  * sharing a facet is near +1 when both balls lie on one side of the sampled surface and near -1
-  * when they lie on opposite sides; beyond the convex hull lies the outside. In 2D the NN-crust
-  * marks the curve edges. Oriented \a vertex_normals (optional) and sensor rays from
+  * Evidence lives on facets (measureFacetAgreements): the cosine of the angle between the
+  * circumspheres of the two cells sharing a facet is near +1 when both balls lie on one side of the
+  * sampled surface and near -1 when they lie on opposite sides; beyond the convex hull lies the
+  * outside. In 2D the NN-crust marks the curve edges. Oriented \a vertex_normals (optional) and sensor rays from
   * params.viewpoint (optional) add evidence per cell. Labels are then propagated from the most
   * certain cell (largest margin between its summed inside and outside evidence) on, as the power
   * crust labels its poles, so that weak, contradictory evidence is decided last.
@@ -25,6 +27,12 @@ namespace core {
 std::size_t
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
                     const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals);
+
+/** \brief The same, on agreements \a measured ahead by measureFacetAgreements of the same cells. */
+std::size_t
+labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
+                    const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
+                    std::vector<GreedyCell>&& measured);
 
 } // namespace core
 } // namespace pcl_flowseg

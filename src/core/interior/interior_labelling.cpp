@@ -11,16 +11,20 @@
 #include "core/interior/greedy_labelling.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace pcl_flowseg {
 namespace core {
 
 namespace {
-/** Labels \a r's cells by the greedy labelling of the raw sample. */
+/** Labels \a r's cells by the greedy labelling of the raw sample (on \a agreements, when measured). */
 void
-labelRawSample (FlowResult& r, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals)
+labelRawSample (FlowResult& r, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
+                std::vector<GreedyCell>&& agreements = {})
 {
-  r.interior.ray_cells = labelCellsGreedily (r.vertices, r.cells, r.dimension, params, vertex_normals);
+  if (agreements.size () != r.cells.size ())
+    agreements = measureFacetAgreements (r.vertices, r.cells, r.dimension);
+  r.interior.ray_cells = labelCellsGreedily (r.vertices, r.cells, r.dimension, params, vertex_normals, std::move (agreements));
   measureBoundary (r);
 }
 
@@ -74,13 +78,14 @@ labelSmoothedSample (FlowResult& r, const InteriorParameters& params, const std:
 } // namespace
 
 void
-labelInterior (FlowResult& r, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals)
+labelInterior (FlowResult& r, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
+               std::vector<GreedyCell>&& raw_agreements)
 {
   r.interior = InteriorReport ();
   r.interior.computed = true;
   // First on the sample as given: right for clean samples, and cheap.
   if (params.denoising != Denoising::Always)
-    labelRawSample (r, params, vertex_normals);
+    labelRawSample (r, params, vertex_normals, std::move (raw_agreements));
   if (params.denoising == Denoising::Off)
     return;
   // Noise shows twice: in a raw labelling that leaves many samples off the boundary it finds, and
