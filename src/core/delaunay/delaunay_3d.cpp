@@ -50,11 +50,16 @@ extractLinks (Delaunay& dt)
   std::vector<typename Delaunay::Cell_handle> handles;
   handles.reserve (dt.number_of_finite_cells ());
   adviseHugePages (handles.data (), handles.capacity () * sizeof (handles[0]));
-  for (auto c = dt.finite_cells_begin (); c != dt.finite_cells_end (); ++c)
-  {
-    c->info () = static_cast<int> (handles.size ());
-    handles.push_back (c);
-  }
+  // Every cell numbered, the infinite ones kInfiniteCell: a neighbour's number then says whether
+  // it is infinite, without visiting its vertices.
+  for (auto c = dt.all_cells_begin (); c != dt.all_cells_end (); ++c)
+    if (dt.is_infinite (c))
+      c->info () = kInfiniteCell;
+    else
+    {
+      c->info () = static_cast<int> (handles.size ());
+      handles.push_back (c);
+    }
   std::vector<CellLinks> links;
   assignOnHugePages (links, handles.size ());
   parallelFor (handles.size (), [&] (std::size_t k) {
@@ -62,8 +67,7 @@ extractLinks (Delaunay& dt)
     for (int i = 0; i < 4; ++i)
     {
       cell.vertices[static_cast<std::size_t> (i)] = handles[k]->vertex (i)->info ();
-      const auto nb = handles[k]->neighbor (i);
-      cell.neighbors[static_cast<std::size_t> (i)] = dt.is_infinite (nb) ? kInfiniteCell : nb->info ();
+      cell.neighbors[static_cast<std::size_t> (i)] = handles[k]->neighbor (i)->info ();
     }
     orientCanonically (cell, 4);
   });
