@@ -4,8 +4,11 @@
  */
 #include "core/merging/sample_spacing.h"
 
+#include "core/support/parallel.h"
+
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 namespace pcl_flowseg {
 namespace core {
@@ -14,18 +17,30 @@ std::vector<double>
 nearestNeighbourDistances (const FlowResult& result)
 {
   const int facets = result.dimension + 1;
-  std::vector<double> nearest (result.vertices.size (), std::numeric_limits<double>::infinity ());
-  for (const FlowCell& cell : result.cells)
-    for (int i = 0; i < facets; ++i)
-      for (int j = i + 1; j < facets; ++j)
+  const std::size_t vertex_count = result.vertices.size ();
+  // Each worker takes the minimum over its cells' edges; minima combine in any order exactly.
+  std::vector<std::vector<double>> parts = gatherInChunks<std::vector<double>> (
+    result.cells.size (), [&] (std::size_t begin, std::size_t end, std::vector<double>& nearest) {
+      nearest.assign (vertex_count, std::numeric_limits<double>::infinity ());
+      for (std::size_t c = begin; c < end; ++c)
       {
-        const std::size_t a = static_cast<std::size_t> (cell.vertices[i]);
-        const std::size_t b = static_cast<std::size_t> (cell.vertices[j]);
-        const double length = (result.vertices[a] - result.vertices[b]).norm ();
-        nearest[a] = std::min (nearest[a], length);
-        nearest[b] = std::min (nearest[b], length);
+        const FlowCell& cell = result.cells[c];
+        for (int i = 0; i < facets; ++i)
+          for (int j = i + 1; j < facets; ++j)
+          {
+            const std::size_t a = static_cast<std::size_t> (cell.vertices[i]);
+            const std::size_t b = static_cast<std::size_t> (cell.vertices[j]);
+            const double length = (result.vertices[a] - result.vertices[b]).norm ();
+            nearest[a] = std::min (nearest[a], length);
+            nearest[b] = std::min (nearest[b], length);
+          }
       }
-  return nearest;
+    });
+  std::vector<double>& nearest = parts.front ();
+  for (std::size_t k = 1; k < parts.size (); ++k)
+    for (std::size_t v = 0; v < vertex_count; ++v)
+      nearest[v] = std::min (nearest[v], parts[k][v]);
+  return std::move (nearest);
 }
 
 double

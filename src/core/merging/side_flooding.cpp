@@ -5,6 +5,7 @@
 #include "core/merging/side_flooding.h"
 
 #include "core/geometry/cell_geometry.h"
+#include "core/support/parallel.h"
 
 #include <queue>
 #include <utility>
@@ -24,9 +25,7 @@ public:
   {
     std::vector<int>& of_cell = groups_.of_cell;
     const std::size_t n = result_.cells.size ();
-    for (std::size_t c = 0; c < n; ++c)
-      if (of_cell[c] >= 0)
-        offer (c);
+    offerFromAllAssigned ();
     for (std::size_t next_cell = 0;;)
     {
       drain ();
@@ -43,9 +42,12 @@ public:
   }
 
 private:
-  /** Offers the unassigned neighbours of the same side of cell \a c its group. */
+  using Entry = std::pair<double, std::pair<int, int>>; // facet height, (cell, group)
+
+  /** The offers of cell \a c: its group to each unassigned neighbour of the same side. */
+  template <class Sink>
   void
-  offer (std::size_t c)
+  offersOf (std::size_t c, Sink&& sink) const
   {
     const FlowCell& cell = result_.cells[c];
     for (int i = 0; i <= result_.dimension; ++i)
@@ -53,9 +55,30 @@ private:
       const int nb = cell.neighbors[i];
       if (nb >= 0 && groups_.of_cell[static_cast<std::size_t> (nb)] < 0 &&
           result_.cells[static_cast<std::size_t> (nb)].inside == cell.inside)
-        queue_.emplace (facetSquaredRadius (result_.vertices, cell, i, result_.dimension),
-                        std::make_pair (nb, groups_.of_cell[c]));
+        sink (Entry (facetSquaredRadius (result_.vertices, cell, i, result_.dimension), std::make_pair (nb, groups_.of_cell[c])));
     }
+  }
+
+  void
+  offer (std::size_t c)
+  {
+    offersOf (c, [this] (const Entry& e) { queue_.push (e); });
+  }
+
+  /** The first offers, of every assigned cell, gathered on all workers and queued in cell order,
+    * as one loop would (the same heap even where a degenerate facet's height is not a number). */
+  void
+  offerFromAllAssigned ()
+  {
+    std::vector<std::vector<Entry>> parts = gatherInChunks<std::vector<Entry>> (
+      result_.cells.size (), [&] (std::size_t begin, std::size_t end, std::vector<Entry>& found) {
+        for (std::size_t c = begin; c < end; ++c)
+          if (groups_.of_cell[c] >= 0)
+            offersOf (c, [&found] (const Entry& e) { found.push_back (e); });
+      });
+    for (const std::vector<Entry>& part : parts)
+      for (const Entry& e : part)
+        queue_.push (e);
   }
 
   void
@@ -73,7 +96,6 @@ private:
     }
   }
 
-  using Entry = std::pair<double, std::pair<int, int>>; // facet height, (cell, group)
   const FlowResult& result_;
   MergeGroups& groups_;
   std::priority_queue<Entry> queue_;
@@ -86,12 +108,11 @@ assignCellsToTheirSide (const FlowResult& result, MergeGroups& groups)
   const bool sided = result.interior.computed;
   const std::size_t n = result.cells.size ();
   groups.of_cell.assign (n, -1);
-  for (std::size_t c = 0; c < n; ++c)
-  {
+  parallelFor (n, [&] (std::size_t c) {
     const int group = groups.of_manifold[static_cast<std::size_t> (result.cells[c].manifold)];
     if (!sided || groups.side[static_cast<std::size_t> (group)] == result.cells[c].inside)
       groups.of_cell[c] = group;
-  }
+  });
   if (sided)
     SideFlood (result, groups).run ();
 }

@@ -73,7 +73,8 @@ reclaimStumps (const FlowResult& result, const std::vector<double>& height, doub
   };
   // Lowest cells first (ties: lower cell, then lower group): a deterministic flood from every
   // boundary between a thin and a thick group at once. The seeds are gathered in parallel; the
-  // queue's order is total, so the order they are gathered in does not matter.
+  // queue's order is total (takes admits finite heights only), so the order of gathering does
+  // not matter.
   using Entry = std::pair<double, std::pair<int, int>>; // cell height, (cell, thin group)
   std::vector<std::vector<Entry>> seeds = gatherInChunks<std::vector<Entry>> (
     n, [&] (std::size_t begin, std::size_t end, std::vector<Entry>& found) {
