@@ -31,15 +31,22 @@ public:
   void
   update (int cell, double key)
   {
-    int& at = position_[static_cast<std::size_t> (cell)];
+    const int at = position_[static_cast<std::size_t> (cell)];
     if (at < 0)
     {
-      at = static_cast<int> (heap_.size ());
+      position_[static_cast<std::size_t> (cell)] = static_cast<int> (heap_.size ());
       heap_.push_back ({key, cell});
+      siftUp (static_cast<int> (heap_.size ()) - 1);
+      return;
     }
+    Entry& entry = heap_[static_cast<std::size_t> (at)];
+    const Entry before = entry;
+    entry.key = key;
+    // A cell that rose cannot have to sink, nor one that fell rise: one direction is enough.
+    if (above (entry, before))
+      siftUp (at);
     else
-      heap_[static_cast<std::size_t> (at)].key = key;
-    siftDown (siftUp (at));
+      siftDown (at);
   }
 
   /** The cell with the highest key, without removing it. */
