@@ -70,15 +70,14 @@ private:
   void
   offerFromAllAssigned ()
   {
-    std::vector<std::vector<Entry>> parts = gatherInChunks<std::vector<Entry>> (
+    const std::vector<Entry> offers = gatherListInOrder<Entry> (
       result_.cells.size (), [&] (std::size_t begin, std::size_t end, std::vector<Entry>& found) {
         for (std::size_t c = begin; c < end; ++c)
           if (groups_.of_cell[c] >= 0)
             offersOf (c, [&found] (const Entry& e) { found.push_back (e); });
       });
-    for (const std::vector<Entry>& part : parts)
-      for (const Entry& e : part)
-        queue_.push (e);
+    for (const Entry& e : offers)
+      queue_.push (e);
   }
 
   void

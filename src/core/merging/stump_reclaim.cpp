@@ -76,7 +76,7 @@ reclaimStumps (const FlowResult& result, const std::vector<double>& height, doub
   // queue's order is total (takes admits finite heights only), so the order of gathering does
   // not matter.
   using Entry = std::pair<double, std::pair<int, int>>; // cell height, (cell, thin group)
-  std::vector<std::vector<Entry>> seeds = gatherInChunks<std::vector<Entry>> (
+  std::vector<Entry> seeds = gatherListInOrder<Entry> (
     n, [&] (std::size_t begin, std::size_t end, std::vector<Entry>& found) {
       for (std::size_t c = begin; c < end; ++c)
         for (int i = 0; i < facets; ++i)
@@ -89,9 +89,7 @@ reclaimStumps (const FlowResult& result, const std::vector<double>& height, doub
             found.emplace_back (result.cells[c].squared_radius, std::make_pair (static_cast<int> (c), x));
         }
     });
-  for (std::size_t k = 1; k < seeds.size (); ++k)
-    seeds.front ().insert (seeds.front ().end (), seeds[k].begin (), seeds[k].end ());
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue (std::greater<Entry> (), std::move (seeds.front ()));
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue (std::greater<Entry> (), std::move (seeds));
   std::vector<char> taken (n, 0);
   while (!queue.empty ())
   {

@@ -17,11 +17,8 @@ namespace core {
   * huge pages (Linux, THP in "madvise" mode). Must come before the memory is first written. The
   * first write to each 4 KiB page otherwise costs a page fault, which on virtual machines can cost
   * more than the work done on the memory. Arrays above kLargestHugePageArray are left on small
-  * pages: on the development VM the first touch of 800 MiB of huge pages took 0.07 to 4.7 s (the
-  * slow case right after a large free), of small pages a steady 0.33 s; at 1M points (per-cell
-  * arrays of 37 to 810 MiB) advising them all made the Delaunay stage take 19 s, advising those up
-  * to 128 MiB 12.5 to 13.5 s, advising none 8 to 10 s; at 120k points the difference was within
-  * the run-to-run noise. */
+  * pages: on virtual machines the first touch of fresh huge pages can cost far more than that of
+  * small ones (the figures are in docs/method.md, "The figures behind the constants"). */
 constexpr std::size_t kLargestHugePageArray = std::size_t (32) << 20;
 
 inline void

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace pcl_flowseg {
@@ -72,6 +73,18 @@ gatherInChunks (std::size_t n, const Body& body)
   else
     tbb::parallel_for (std::size_t (0), chunks, [&] (std::size_t k) { body (n * k / chunks, n * (k + 1) / chunks, results[k]); });
   return results;
+}
+
+/** \brief The items \a body (begin, end, out) appends for its chunk of [0, n), gathered on all
+  * workers and joined in index order: the list the sequential loop would have made. */
+template <class Item, class Body>
+std::vector<Item>
+gatherListInOrder (std::size_t n, const Body& body)
+{
+  std::vector<std::vector<Item>> parts = gatherInChunks<std::vector<Item>> (n, body);
+  for (std::size_t k = 1; k < parts.size (); ++k)
+    parts.front ().insert (parts.front ().end (), parts[k].begin (), parts[k].end ());
+  return std::move (parts.front ());
 }
 
 /** \brief Runs \a first and \a second, at the same time when two workers are allowed. They must
