@@ -1,15 +1,18 @@
 /*
- * flowseg_sample: area-uniform point samples of a triangle mesh, with optional Gaussian noise, or the
- * boundary of a silhouette image.
+ * flowseg_sample: area-uniform point samples of a triangle mesh or a virtual range scan of it, with
+ * optional noise and outliers, or the boundary of a silhouette image.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "common/options.h"
 
 #include <pcl_flowseg/io/mesh_io.h>
 #include <pcl_flowseg/io/point_cloud_writer.h>
+#include <pcl_flowseg/io/range_scan.h>
+#include <pcl_flowseg/io/sample_outliers.h>
 #include <pcl_flowseg/io/silhouette.h>
 
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +23,8 @@ struct Options
   std::string output;
   std::size_t points = 10000;
   double noise = 0.0;
+  double outliers = 0.0;
+  std::optional<Eigen::Vector3d> scan_from;
   std::uint32_t seed = 1;
   bool binary = false;
 };
@@ -46,9 +51,20 @@ meshPoints (const std::string& input, const Options& o, std::vector<Eigen::Vecto
   if (const pcl_flowseg::Status s = pcl_flowseg::loadTriangleMesh (input, mesh); !s)
     return s;
   const double sigma = o.noise * mesh.diagonal ();
-  pts = pcl_flowseg::sampleMeshSurface (mesh, o.points, sigma, o.seed);
-  what = std::to_string (mesh.faces.size ()) + " faces, noise sigma " + std::to_string (sigma);
-  return pcl_flowseg::Status::success ();
+  if (!o.scan_from)
+  {
+    pts = pcl_flowseg::sampleMeshSurface (mesh, o.points, sigma, o.seed);
+    what = std::to_string (mesh.faces.size ()) + " faces, noise sigma " + std::to_string (sigma);
+    return pcl_flowseg::Status::success ();
+  }
+  pcl_flowseg::RangeScanOptions scan;
+  scan.viewpoint = *o.scan_from;
+  scan.points = o.points;
+  scan.depth_noise = o.noise;
+  scan.seed = o.seed;
+  what = "a scan of " + std::to_string (mesh.faces.size ()) + " faces, depth noise sigma " + std::to_string (sigma) +
+         " at the centre's range";
+  return pcl_flowseg::scanMesh (mesh, scan, pts);
 }
 
 } // namespace
@@ -58,15 +74,22 @@ main (int argc, char** argv)
 {
   Options o;
   flowseg_app::OptionParser p ("flowseg_sample", "flowseg_sample INPUT -o OUTPUT.pcd [options]",
-                               "Samples points area-uniformly on the faces of a triangle mesh (.off, .obj, .ply), or takes the\n"
-                               "boundary of the silhouette in a binary image (.png, .bmp, .pgm: the pixel-edge midpoints between\n"
-                               "the shape and the background, in pixel units, z = 0; --points, --noise and --seed do not apply).");
+                               "Samples points area-uniformly on the faces of a triangle mesh (.off, .obj, .ply), or scans it\n"
+                               "from a viewpoint (--scan-from: the points a range sensor there sees, the viewpoint written as\n"
+                               "the PCD VIEWPOINT), or takes the boundary of the silhouette in a binary image (.png, .bmp,\n"
+                               ".pgm: the pixel-edge midpoints between the shape and the background, in pixel units, z = 0;\n"
+                               "--points, --noise and --scan-from do not apply).");
   p.text ("-o, --output", "FILE", "output point cloud (.pcd), required", o.output);
   p.count ("-n, --points", "N", "number of points", o.points, 1, 100000000);
-  p.number ("--noise", "F", "Gaussian noise, standard deviation as a share of the bounding-box\ndiagonal (0.005 = 0.5%)", o.noise,
-            [] (double v) {
-              return v >= 0 && v <= 1 ? pcl_flowseg::Status::success () : pcl_flowseg::Status::error ("must lie in [0, 1]");
-            });
+  const auto share = [] (double v) {
+    return v >= 0 && v <= 1 ? pcl_flowseg::Status::success () : pcl_flowseg::Status::error ("must lie in [0, 1]");
+  };
+  p.number ("--noise", "F",
+            "Gaussian noise, standard deviation as a share of the bounding-box\ndiagonal (0.005 = 0.5%); in a scan along "
+            "the rays, at the range of\nthe centre, growing with the squared range",
+            o.noise, share);
+  p.number ("--outliers", "F", "share of the points replaced by points uniform in their bounding box", o.outliers, share);
+  p.point ("--scan-from", "scan the mesh from this viewpoint (mesh units, outside the mesh's\nbounding sphere)", o.scan_from);
   p.count ("--seed", "S", "random seed", o.seed, 0, 4294967295LL);
   p.flag ("--binary", "binary PCD (default ASCII)", o.binary);
   p.epilogue ("Exit status: 0 success, 1 unreadable input or unwritable output, 2 bad options.");
@@ -81,7 +104,12 @@ main (int argc, char** argv)
                                                                             : meshPoints (inputs[0], o, pts, what);
   if (!read)
     return p.failure (read.message);
+  if (o.outliers > 0.0)
+    what += ", " + std::to_string (pcl_flowseg::replaceWithOutliers (pts, o.outliers, o.seed + 1)) + " points replaced by outliers";
   pcl::PointCloud<pcl::PointXYZ> cloud;
+  if (o.scan_from)
+    cloud.sensor_origin_ = Eigen::Vector4f (static_cast<float> (o.scan_from->x ()), static_cast<float> (o.scan_from->y ()),
+                                            static_cast<float> (o.scan_from->z ()), 0.0f);
   for (const auto& q : pts)
     cloud.push_back (pcl::PointXYZ (static_cast<float> (q.x ()), static_cast<float> (q.y ()), static_cast<float> (q.z ())));
   if (const pcl_flowseg::Status s = pcl_flowseg::writePointCloud (o.output, cloud, o.binary); !s)

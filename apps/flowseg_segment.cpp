@@ -126,14 +126,15 @@ printSummary (const Options& o, const pcl_flowseg::FlowResult& r, double read_ms
                 "%zu segments after merging with rho=%g (%zu interior), %zu features reported (%zu significant), %zu points unlabelled\n",
                 r.dimension, r.input_points, r.non_finite_points, r.duplicate_points, r.cells.size (), r.maxima.size (),
                 r.segments.size (), r.parameters.merge.rho, interior, r.features.size (), significant, r.unlabelledPoints ());
+  std::fprintf (stderr, "noise: estimated sigma %.4g (%.3f%% of the bounding-box diagonal)\n", r.noise.sigma, 100.0 * r.noise.share);
   if (r.interior.computed)
     std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s, %zu samples off the boundary, %d smoothing pass(es)\n",
                   r.interior.inside_volume, r.interior.inside_cells, r.interior.boundary_facets,
                   r.interior.closed ? "closed" : "NOT closed", r.interior.manifold ? "manifold" : "not manifold",
                   r.interior.vertices_off_boundary, r.interior.smoothing_passes);
   const auto& t = r.timings;
-  std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, delaunay %.1f, flow %.1f, manifolds %.1f, interior %.1f, merge %.1f, labels %.1f, total %.1f\n",
-                read_ms, t.preparation_ms, t.delaunay_ms, t.flow_ms, t.manifolds_ms, t.interior_ms, t.merge_ms, t.labels_ms, t.total_ms);
+  std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, noise %.1f, delaunay %.1f, flow %.1f, manifolds %.1f, interior %.1f, merge %.1f, labels %.1f, total %.1f\n",
+                read_ms, t.preparation_ms, t.noise_ms, t.delaunay_ms, t.flow_ms, t.manifolds_ms, t.interior_ms, t.merge_ms, t.labels_ms, t.total_ms);
   std::fprintf (stderr, "wrote %s.labels.pcd, %s.json, %s.ply%s%s\n", o.prefix.c_str (), o.prefix.c_str (), o.prefix.c_str (),
                 o.surface && o.params.interior.separate ? (", " + o.prefix + ".surface.ply").c_str () : "",
                 r.dimension == 2 ? (", " + o.prefix + ".svg").c_str () : "");

@@ -16,6 +16,8 @@
 
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/io/mesh_io.h>
+#include <pcl_flowseg/io/range_scan.h>
+#include <pcl_flowseg/io/sample_outliers.h>
 #include <pcl_flowseg/evaluation/segmentation_evaluation.h>
 #include <pcl_flowseg/evaluation/shape_generator.h>
 
@@ -27,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -51,7 +54,13 @@ struct Options
   std::string pictures; // folder for PNG pictures of each model's segmentations; empty: none
   pcl_flowseg::FlowParameters flow; // every flowseg run; rho is set per run from \a rhos
   double significance = 0.0; // > 0: only features above this share of the feature volume label faces
+  double noise = 0.0;        // Gaussian noise, standard deviation as a share of the mesh's bounding-box diagonal
+  double outliers = 0.0;     // share of the sample replaced by points uniform in its bounding box
+  std::vector<Eigen::Vector3d> scan_directions; // non-empty: single views from these directions
 };
+
+/** Sensor distance of the single views, in bounding radii of the mesh from its centre. */
+constexpr double kScanDistance = 3.0;
 
 const char* const kUsage =
   "usage: flowseg_bench_psb [--data DIR (../shared/data/psb_dev)] [--points N (10000)]\n"
@@ -59,7 +68,13 @@ const char* const kUsage =
   "                         [--no-sdf] [--csv FILE] [--pictures DIR]\n"
   "                         [--tolerance T] [--stump-ratio S] [--compact-rho R] [--compact-size S]\n"
   "                         [--paper-rule]   (merge parameters: the library's defaults unless given)\n"
-  "                         [--significance F (0: every feature)]\n"
+  "                         [--significance F (0: every feature)] [--min-part-share F]\n"
+  "                         [--noise F (0)] [--outliers F (0)] [--scan-from six|X,Y,Z]\n"
+  "  --noise F: Gaussian noise of standard deviation F times the bounding-box diagonal\n"
+  "  --outliers F: that share of the sample replaced by points uniform in its bounding box\n"
+  "  --scan-from: single views instead of whole samples, the sensor 3 bounding radii from the centre\n"
+  "               in the direction X,Y,Z or in each of the six axis directions (six); --noise is\n"
+  "               then depth noise; the error counts only the faces the scan sees, averaged over views\n"
   "  --paper-rule: the paper's merging rule alone (tolerance, stump ratio, compact size 0)\n"
   "  --significance F: only features above F of the features' volume label faces; the faces of the\n"
   "                    others take the label of the nearest significant samples\n"
@@ -74,6 +89,35 @@ splitList (const std::string& text)
     if (!item.empty ())
       items.push_back (item);
   return items;
+}
+
+/** "six" (the six axis directions) or one direction X,Y,Z (normalised). */
+bool
+parseScanDirections (const std::string& value, std::vector<Eigen::Vector3d>& directions)
+{
+  directions.clear ();
+  if (value == "six")
+  {
+    for (int axis = 0; axis < 3; ++axis)
+      for (double sign : {1.0, -1.0})
+        directions.push_back (sign * Eigen::Vector3d::Unit (axis));
+    return true;
+  }
+  const auto items = splitList (value);
+  if (items.size () != 3)
+    return false;
+  Eigen::Vector3d d;
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    char* end = nullptr;
+    d[static_cast<long> (k)] = std::strtod (items[k].c_str (), &end);
+    if (*end)
+      return false;
+  }
+  if (!d.allFinite () || d.norm () == 0.0)
+    return false;
+  directions.push_back (d.normalized ());
+  return true;
 }
 
 bool
@@ -97,6 +141,19 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
       if (n < 4)
         return error = "--points needs a number >= 4", false;
       o.points = static_cast<std::size_t> (n);
+    }
+    else if (a == "--scan-from" && has_value)
+    {
+      if (!parseScanDirections (argv[++i], o.scan_directions))
+        return error = "--scan-from needs six or a direction X,Y,Z", false;
+    }
+    else if ((a == "--noise" || a == "--outliers" || a == "--min-part-share") && has_value)
+    {
+      char* end = nullptr;
+      const double v = std::strtod (argv[++i], &end);
+      if (*end || !(v >= 0.0 && v < 1.0))
+        return error = a + " needs a number in [0, 1)", false;
+      (a == "--noise" ? o.noise : a == "--outliers" ? o.outliers : o.flow.merge.min_part_share) = v;
     }
     else if ((a == "--tolerance" || a == "--stump-ratio" || a == "--compact-rho" || a == "--compact-size") && has_value)
     {
@@ -191,9 +248,10 @@ errorOf (const std::vector<double>& weights, const std::vector<int>& a, const st
 }
 
 Score
-meanError (const std::vector<double>& areas, const std::vector<int>& labels, const std::vector<std::vector<int>>& references)
+meanError (const std::vector<double>& areas, const std::vector<int>& labels, const std::vector<std::vector<int>>& references,
+           const std::vector<double>& counted = {})
 {
-  const std::vector<double> ones (areas.size (), 1.0);
+  const std::vector<double> ones = counted.empty () ? std::vector<double> (areas.size (), 1.0) : counted;
   Score s{0.0, 0.0};
   for (const auto& ref : references)
   {
@@ -221,10 +279,15 @@ humanAgreement (const std::vector<double>& areas, const std::vector<std::vector<
   return Score{s.area / pairs, s.faces / pairs};
 }
 
+/** Distinct labels among the faces (points) with a non-zero weight in \a counted (all if empty). */
 std::size_t
-distinctLabels (const std::vector<int>& labels)
+distinctLabels (const std::vector<int>& labels, const std::vector<double>& counted = {})
 {
-  return std::set<int> (labels.begin (), labels.end ()).size ();
+  std::set<int> distinct;
+  for (std::size_t k = 0; k < labels.size (); ++k)
+    if (counted.empty () || counted[k] > 0.0)
+      distinct.insert (labels[k]);
+  return distinct.size ();
 }
 
 double
@@ -241,6 +304,7 @@ struct MethodResult
   double features = kMissing; ///< flowseg: reported features (FlowResult::features)
   double seconds = 0.0;
   std::string error;
+  std::vector<int> labels; ///< flowseg: the face labels of the (first) view
 };
 
 struct ModelResult
@@ -293,13 +357,71 @@ insignificantFeatures (const pcl_flowseg::FlowResult& result, double share)
   return out;
 }
 
-/** Segments \a points at \a rho (the options' parameters otherwise) into \a result, timed. */
+/** What flowseg sees of a model: a whole sample, or a single view with its sensor position and
+  * the faces it sees (the only ones its error counts). */
+struct ModelView
+{
+  std::vector<Eigen::Vector3d> points;
+  std::optional<Eigen::Vector3d> viewpoint;
+  std::vector<double> area_weights, face_weights; // per face: area or 1 where counted, else 0
+};
+
+/** The views of \a mesh the options ask for: one whole sample (noise, outliers), or one scan per
+  * direction (depth noise, outliers). */
+std::vector<ModelView>
+modelViews (const pcl_flowseg::TriangleMesh& mesh, const std::vector<double>& areas, const Options& o)
+{
+  std::vector<ModelView> views;
+  if (o.scan_directions.empty ())
+  {
+    ModelView v;
+    v.points = pcl_flowseg::sampleMeshSurface (mesh, o.points, o.noise * mesh.diagonal (), o.seed);
+    v.area_weights = areas;
+    v.face_weights.assign (areas.size (), 1.0);
+    views.push_back (std::move (v));
+  }
+  Eigen::Vector3d lo = mesh.vertices.front (), hi = lo;
+  for (const auto& p : mesh.vertices)
+    lo = lo.cwiseMin (p), hi = hi.cwiseMax (p);
+  double radius = 0.0;
+  for (const auto& p : mesh.vertices)
+    radius = std::max (radius, (p - 0.5 * (lo + hi)).norm ());
+  for (const Eigen::Vector3d& direction : o.scan_directions)
+  {
+    pcl_flowseg::RangeScanOptions scan;
+    scan.viewpoint = 0.5 * (lo + hi) + kScanDistance * radius * direction;
+    scan.points = o.points;
+    scan.depth_noise = o.noise;
+    scan.seed = o.seed;
+    ModelView v;
+    std::vector<int> faces;
+    if (!pcl_flowseg::scanMesh (mesh, scan, v.points, faces))
+      continue;
+    v.viewpoint = scan.viewpoint;
+    v.area_weights.assign (areas.size (), 0.0);
+    v.face_weights.assign (areas.size (), 0.0);
+    for (int f : faces)
+    {
+      v.area_weights[static_cast<std::size_t> (f)] = areas[static_cast<std::size_t> (f)];
+      v.face_weights[static_cast<std::size_t> (f)] = 1.0;
+    }
+    views.push_back (std::move (v));
+  }
+  for (ModelView& v : views)
+    pcl_flowseg::replaceWithOutliers (v.points, o.outliers, o.seed + 1);
+  return views;
+}
+
+/** Segments \a points at \a rho (the options' parameters otherwise, the sensor at \a viewpoint
+  * when given) into \a result, timed. */
 MethodResult
-runFlow (const std::vector<Eigen::Vector3d>& points, double rho, const Options& o, pcl_flowseg::FlowResult& result)
+runFlow (const std::vector<Eigen::Vector3d>& points, double rho, const Options& o, pcl_flowseg::FlowResult& result,
+         const std::optional<Eigen::Vector3d>& viewpoint = std::nullopt)
 {
   MethodResult m;
   pcl_flowseg::FlowParameters params = o.flow;
   params.merge.rho = rho;
+  params.interior.viewpoint = viewpoint;
   const auto start = std::chrono::steady_clock::now ();
   const Status st = pcl_flowseg::runFlowSegmentation (points, params, result);
   m.seconds = secondsSince (start);
@@ -308,6 +430,45 @@ runFlow (const std::vector<Eigen::Vector3d>& points, double rho, const Options& 
   else
     m.features = static_cast<double> (result.features.size ());
   return m;
+}
+
+/** flowseg at \a rho on each view, scored on the faces the view counts; scores, segments and
+  * features averaged over the views, times summed. Labels: those of the first view. */
+MethodResult
+scoreViews (const pcl_flowseg::TriangleMesh& mesh, const std::vector<std::vector<int>>& humans, const std::vector<ModelView>& views,
+            double rho, const Options& o, double& transfer_seconds)
+{
+  MethodResult total;
+  total.score = Score{0.0, 0.0};
+  total.segments = total.features = 0.0;
+  for (const ModelView& v : views)
+  {
+    pcl_flowseg::FlowResult result;
+    const MethodResult m = runFlow (v.points, rho, o, result, v.viewpoint);
+    if (!m.error.empty ())
+      return m;
+    const auto start = std::chrono::steady_clock::now ();
+    std::vector<int> labels;
+    pcl_flowseg::transferPointLabelsToFaces (mesh, v.points, result.point_labels, labels,
+                                             insignificantFeatures (result, o.significance)); // sizes match
+    transfer_seconds += secondsSince (start);
+    const Score s = meanError (v.area_weights, labels, humans, v.face_weights);
+    const double n = static_cast<double> (views.size ());
+    total.score.area += s.area / n;
+    total.score.faces += s.faces / n;
+    total.segments += static_cast<double> (distinctLabels (labels, v.face_weights)) / n;
+    total.features += m.features / n;
+    total.seconds += m.seconds;
+    if (total.labels.empty ())
+    {
+      for (std::size_t f = 0; f < labels.size (); ++f)
+        labels[f] = v.face_weights[f] > 0.0 ? labels[f] : -1; // unseen faces grey in pictures
+      total.labels = std::move (labels);
+    }
+  }
+  if (views.empty ())
+    total.error = "no view of the model";
+  return total;
 }
 
 ModelResult
@@ -336,29 +497,17 @@ evaluateModel (const Model& model, const Options& o)
     flowseg_bench::renderSegmentedMesh (mesh, humans.front (), (fs::path (o.pictures) / (model.id + "_human.png")).string ());
   }
 
-  const auto points = pcl_flowseg::sampleMeshSurface (mesh, o.points, 0.0, o.seed);
+  const std::vector<ModelView> views = modelViews (mesh, areas, o);
   for (double rho : o.rhos)
   {
     std::fprintf (stderr, "  model %s: flowseg rho %g\n", model.id.c_str (), rho);
-    pcl_flowseg::FlowResult result;
-    MethodResult m = runFlow (points, rho, o, result);
-    if (m.error.empty ())
+    r.flow.push_back (scoreViews (mesh, humans, views, rho, o, r.transfer_seconds));
+    if (!o.pictures.empty () && !r.flow.back ().labels.empty ())
     {
-      const auto start = std::chrono::steady_clock::now ();
-      std::vector<int> labels;
-      pcl_flowseg::transferPointLabelsToFaces (mesh, points, result.point_labels, labels,
-                                               insignificantFeatures (result, o.significance)); // sizes match
-      r.transfer_seconds += secondsSince (start);
-      m.score = meanError (areas, labels, humans);
-      m.segments = static_cast<double> (distinctLabels (labels));
-      if (!o.pictures.empty ())
-      {
-        char name[64];
-        std::snprintf (name, sizeof (name), "_flowseg_rho%g.png", rho);
-        flowseg_bench::renderSegmentedMesh (mesh, labels, (fs::path (o.pictures) / (model.id + name)).string ());
-      }
+      char name[64];
+      std::snprintf (name, sizeof (name), "_flowseg_rho%g.png", rho);
+      flowseg_bench::renderSegmentedMesh (mesh, r.flow.back ().labels, (fs::path (o.pictures) / (model.id + name)).string ());
     }
-    r.flow.push_back (m);
   }
   if (o.sdf)
   {
@@ -703,8 +852,10 @@ main (int argc, char** argv)
   std::printf ("PSB: %zu models from %s, %zu points per model, seed %u, rho", models.size (), o.data.c_str (), o.points, o.seed);
   for (double rho : o.rhos)
     std::printf (" %g", rho);
-  std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g, significance %g",
-               o.flow.merge.sampling_tolerance, o.flow.merge.stump_ratio, o.flow.merge.compact_rho, o.flow.merge.compact_size, o.significance);
+  std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g, smallest part share %g, "
+               "significance %g, noise %g, outliers %g",
+               o.flow.merge.sampling_tolerance, o.flow.merge.stump_ratio, o.flow.merge.compact_rho, o.flow.merge.compact_size,
+               o.flow.merge.min_part_share, o.significance, o.noise, o.outliers);
   std::printf ("; errors: area-weighted Rand-index error, mean over the model's human segmentations\n\n");
   std::vector<ModelResult> results;
   for (std::size_t i = 0; i < models.size (); ++i)

@@ -128,6 +128,15 @@ printf 'P5\n5 5\n255\nxy' > "$work/short.pgm"
 expect "sample a truncated image" 1 "truncated" -- "$smp" "$work/short.pgm" -o "$work/x.pcd"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/broken.off"
 expect "sampler corrupt mesh" 1 "vertex" -- "$smp" "$work/broken.off" -o "$work/x.pcd"
+expect "scan a mesh" 0 "a scan of" -- "$smp" "$work/tet.off" -n 300 --scan-from 5,5,5 --noise 0.001 -o "$work/scan.pcd"
+[ "$(grep -m1 '^VIEWPOINT' "$work/scan.pcd")" = "VIEWPOINT 5 5 5 1 0 0 0" ]; check "the scan's viewpoint is the PCD VIEWPOINT" $?
+[ "$(grep -m1 '^POINTS' "$work/scan.pcd" | awk '{print $2}')" = "300" ]; check "scan point count" $?
+expect "segment a scan from its sensor origin" 0 "noise: estimated sigma" -- "$seg" "$work/scan.pcd" --use-sensor-origin -o "$work/scan"
+expect "scan from inside the mesh" 1 "outside the mesh's bounding sphere" -- "$smp" "$work/tet.off" --scan-from 0.2,0.2,0.2 -o "$work/x.pcd"
+expect "scan viewpoint malformed" 2 "scan-from" -- "$smp" "$work/tet.off" --scan-from 1,2 -o "$work/x.pcd"
+expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off" -n 500 --outliers 0.02 -o "$work/out.pcd"
+expect "sampler bad outliers" 2 "outliers" -- "$smp" "$work/tet.off" --outliers 2 -o "$work/x.pcd"
+expect "smallest part share absurd" 2 "min-part-share" -- "$seg" "$src/samples/hand2d.pcd" --min-part-share 1
 
 # --- signature database and retrieval evaluation ----------------------------------------------
 db="$build/apps/flowseg_db"

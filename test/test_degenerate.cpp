@@ -237,6 +237,15 @@ TEST (Degenerate, AbsurdParametersAreRejected)
       EXPECT_FALSE (s.ok);
       EXPECT_NE (s.message.find (size ? "compact size" : "compact rho"), std::string::npos) << s.message;
     }
+  for (double value : {-0.1, 1.0, 5.0, std::nan (""), std::numeric_limits<double>::infinity ()})
+  {
+    FlowParameters params;
+    params.merge.min_part_share = value;
+    FlowResult bad;
+    const Status s = runFlowSegmentation (pts, params, bad);
+    EXPECT_FALSE (s.ok);
+    EXPECT_NE (s.message.find ("smallest part share"), std::string::npos) << s.message;
+  }
   FlowResult r = segmentOrDie (pts);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (-2.0), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, -1.0), r).ok);

@@ -229,6 +229,7 @@ expectSameMerge (const pcl_flowseg::MergeParameters& a, const pcl_flowseg::Merge
   EXPECT_EQ (a.stump_ratio, b.stump_ratio);
   EXPECT_EQ (a.compact_rho, b.compact_rho);
   EXPECT_EQ (a.compact_size, b.compact_size);
+  EXPECT_EQ (a.min_part_share, b.min_part_share);
 }
 } // namespace
 
@@ -240,6 +241,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   seg.setStumpRatio (3.0);
   seg.setCompactRho (1.4);
   seg.setCompactSize (1.5);
+  seg.setMinPartShare (0.01);
   seg.setDimension (2);
   seg.setPlanarTolerance (1e-6);
   seg.setSeparateInterior (true);
@@ -253,6 +255,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   EXPECT_EQ (p.merge.stump_ratio, 3.0);
   EXPECT_EQ (p.merge.compact_rho, 1.4);
   EXPECT_EQ (p.merge.compact_size, 1.5);
+  EXPECT_EQ (p.merge.min_part_share, 0.01);
   EXPECT_EQ (p.preparation.dimension, pcl_flowseg::DimensionMode::Planar);
   EXPECT_EQ (p.preparation.planar_tolerance, 1e-6);
   EXPECT_EQ (p.interior.denoising, pcl_flowseg::Denoising::Off);

@@ -165,7 +165,10 @@ TEST (PointIO, SharedCloudsLoadAndSegment)
     ASSERT_TRUE (seg.segment (segments)) << name << ": " << seg.getLastError ();
     EXPECT_EQ (seg.getResult ().dimension, 3) << name;
     EXPECT_GT (seg.getResult ().vertices.size (), 0.99 * cloud->size ()) << name << ": coordinates lost in reading";
-    EXPECT_GT (segments.size (), 2u) << name;
+    ASSERT_FALSE (segments.empty ()) << name;
+    for (const pcl::PointIndices& segment : segments)
+      for (int index : segment.indices)
+        EXPECT_LT (static_cast<std::size_t> (index), cloud->size ()) << name;
   }
 }
 

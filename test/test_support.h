@@ -40,24 +40,27 @@ randomPoints (std::size_t count, int dimension, std::uint32_t seed)
   return pts;
 }
 
-/** A merge group: \a rho and the given values, the library's defaults for the others. */
+/** A merge group: \a rho and the given values, the library's defaults for the others except the
+  * smallest part share, 0 unless given: the tests of the rule and its passes see every segment
+  * they make (test_small_parts.cpp tests the small-part pass). */
 inline pcl_flowseg::MergeParameters
 mergeParameters (double rho, double sampling_tolerance = kDefaultMerge.sampling_tolerance,
                  double stump_ratio = kDefaultMerge.stump_ratio,
-                 double compact_size = kDefaultMerge.compact_size)
+                 double compact_size = kDefaultMerge.compact_size, double min_part_share = 0.0)
 {
   pcl_flowseg::MergeParameters params;
   params.rho = rho;
   params.sampling_tolerance = sampling_tolerance;
   params.stump_ratio = stump_ratio;
   params.compact_size = compact_size;
+  params.min_part_share = min_part_share;
   return params;
 }
 
 /** Runs the core and fails the calling test when it does not succeed. By default the paper's raw
   * segmentation of the whole convex hull (no interior/exterior separation): the structural
   * tests check the flow itself. The merging has the default sampling tolerance, stump ratio and
-  * compact size unless given (all 0: the paper's segments exactly). */
+  * compact size unless given (all 0: the paper's segments exactly), and no small-part pass. */
 inline pcl_flowseg::FlowResult
 segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = kDefaultMerge.rho,
               pcl_flowseg::DimensionMode mode = pcl_flowseg::DimensionMode::Automatic, bool separate_interior = false,

@@ -34,8 +34,11 @@ addMergeOptions (OptionParser& p, pcl_flowseg::MergeParameters& merge)
             mergeCheck (&M::compact_rho));
   p.number ("--compact-size", "S", "largest compact segment, in balls of its saddle's radius, >= 0;\n0 = off",
             merge.compact_size, mergeCheck (&M::compact_size));
+  p.number ("--min-part-share", "F",
+            "smallest part, as a share of its side's volume in [0, 1): smaller\nsegments join the neighbour across their widest saddle; 0 = keep all",
+            merge.min_part_share, mergeCheck (&M::min_part_share));
   pcl_flowseg::MergeParameters* m = &merge;
-  p.action ("--paper-rule", "the paper's merging rule alone: tolerance, stump ratio and compact\nsize 0",
+  p.action ("--paper-rule", "the paper's merging rule alone: tolerance, stump ratio, compact\nsize and smallest part share 0",
             [m] () { m->usePaperRule (); });
 }
 

@@ -112,6 +112,7 @@ timings (const pcl_flowseg::StageTimings& t)
 {
   py::dict d;
   d["preparation"] = t.preparation_ms;
+  d["noise"] = t.noise_ms;
   d["delaunay"] = t.delaunay_ms;
   d["flow"] = t.flow_ms;
   d["manifolds"] = t.manifolds_ms;
@@ -199,11 +200,12 @@ segment (const py::object& points_object, const py::object& normals_object, cons
 Segmentation
 remerge (const Segmentation& s, const py::kwargs& kwargs)
 {
-  static const std::set<std::string> merge_names = {"rho", "sampling_tolerance", "stump_ratio", "compact_rho", "compact_size"};
+  static const std::set<std::string> merge_names = {"rho", "sampling_tolerance", "stump_ratio", "compact_rho", "compact_size",
+                                                     "min_part_share"};
   for (const auto& item : kwargs)
     if (!merge_names.count (py::str (item.first)))
       throw py::type_error ("remerge: unexpected keyword argument '" + std::string (py::str (item.first)) +
-                            "' (only rho, sampling_tolerance, stump_ratio, compact_rho, compact_size)");
+                            "' (only rho, sampling_tolerance, stump_ratio, compact_rho, compact_size, min_part_share)");
   CallParameters call;
   call.flow = s.result->parameters;
   pcl_flowseg::MatchParameters unused;
@@ -267,6 +269,13 @@ bindResult (py::module_& m)
       .def_property_readonly ("non_finite_points", [] (const Segmentation& s) { return s.result->non_finite_points; })
       .def_property_readonly ("duplicate_points", [] (const Segmentation& s) { return s.result->duplicate_points; })
       .def_property_readonly ("unlabelled_points", [] (const Segmentation& s) { return s.result->unlabelledPoints (); })
+      .def_property_readonly ("noise", [] (const Segmentation& s) {
+        py::dict d;
+        d["sigma"] = s.result->noise.sigma;
+        d["share"] = s.result->noise.share;
+        d["points_used"] = s.result->noise.points_used;
+        return d;
+      }, "The sample's estimated noise: sigma (input units), share (of the bounding-box diagonal), points_used.")
       .def_property_readonly ("interior", [] (const Segmentation& s) { return interiorReport (s.result->interior); },
                               "What the interior/exterior separation found.")
       .def_property_readonly ("warnings", [] (const Segmentation& s) { return s.result->warnings; })
@@ -280,7 +289,7 @@ bindResult (py::module_& m)
           "The shape's signature: its significant interior features as weighted points (needs separate=True).")
       .def ("remerge", &remerge,
             "A copy merged again with other merge parameters (rho, sampling_tolerance, stump_ratio, compact_rho, "
-            "compact_size); cheap: the triangulation and flow are reused.")
+            "compact_size, min_part_share); cheap: the triangulation and flow are reused.")
       .def ("__repr__", [] (const Segmentation& s) {
         return "<Segmentation " + std::to_string (s.result->dimension) + "D, " + std::to_string (s.result->input_points) +
                " points, " + std::to_string (s.result->features.size ()) + " features>";
@@ -303,7 +312,7 @@ points: (n, 2) or (n, 3) float32/float64 array (2 columns: a 2D shape). NaN/Inf 
 normals: None or (n, 3) array of outward normals (evidence for the interior/exterior separation).
 progress: None or a callable(stage: str, fraction: float), called during the run.
 Keywords (see defaults()): dimension, planar_tolerance, rho, sampling_tolerance, stump_ratio,
-    compact_rho, compact_size, separate, denoising, viewpoint, features, threads, memory_limit,
+    compact_rho, compact_size, min_part_share, separate, denoising, viewpoint, features, threads, memory_limit,
     significance.
 Raises ValueError for input that cannot be segmented or a parameter out of range, TypeError for
 an unknown keyword. The GIL is released during the computation.)doc");

@@ -35,6 +35,7 @@ PYBIND11_MODULE (_pcl_flowseg, m)
     d["sampling_tolerance"] = merge.sampling_tolerance;
     d["stump_ratio"] = merge.stump_ratio;
     d["compact_size"] = merge.compact_size;
+    d["min_part_share"] = merge.min_part_share;
     return d;
   }, py::arg ("rho") = pcl_flowseg::MergeParameters ().rho,
      "The merge keywords of the paper's rule alone at rho: segment(points, **paper_rule(1.3)).");

@@ -30,6 +30,8 @@ checkMergeParameters (const MergeParameters& m)
     return Status::error ("the compact rho must be a finite number > 0" + got (m.compact_rho));
   if (!std::isfinite (m.compact_size) || m.compact_size < 0.0)
     return Status::error ("the compact size must be a finite number >= 0" + got (m.compact_size));
+  if (!(m.min_part_share >= 0.0 && m.min_part_share < 1.0))
+    return Status::error ("the smallest part share must be a number in [0, 1)" + got (m.min_part_share));
   return Status::success ();
 }
 

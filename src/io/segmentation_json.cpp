@@ -47,7 +47,7 @@ parametersJson (const FlowParameters& p)
   s += ", \"planar_tolerance\": " + num (p.preparation.planar_tolerance) + "}";
   s += ", \"merge\": {\"rho\": " + num (p.merge.rho) + ", \"sampling_tolerance\": " + num (p.merge.sampling_tolerance) +
        ", \"stump_ratio\": " + num (p.merge.stump_ratio) + ", \"compact_rho\": " + num (p.merge.compact_rho) +
-       ", \"compact_size\": " + num (p.merge.compact_size) + "}";
+       ", \"compact_size\": " + num (p.merge.compact_size) + ", \"min_part_share\": " + num (p.merge.min_part_share) + "}";
   s += ", \"interior\": {\"separate\": " + std::string (jsonBool (p.interior.separate)) + ", \"denoising\": ";
   s += n == Denoising::Automatic ? "\"auto\"" : n == Denoising::Off ? "\"off\"" : "\"always\"";
   s += ", \"viewpoint\": " + (p.interior.viewpoint ? vec (*p.interior.viewpoint, 3) : std::string ("null")) + "}";
@@ -135,6 +135,7 @@ writeTimingsAndWarnings (std::ostream& out, const FlowResult& r, const RunInfo& 
 {
   const StageTimings& t = r.timings;
   out << "  \"timings_ms\": {\"read\": " << num (info.read_ms) << ", \"preparation\": " << num (t.preparation_ms)
+      << ", \"noise\": " << num (t.noise_ms)
       << ", \"delaunay\": " << num (t.delaunay_ms) << ", \"flow\": " << num (t.flow_ms)
       << ", \"manifolds\": " << num (t.manifolds_ms) << ", \"interior\": " << num (t.interior_ms)
       << ", \"merge\": " << num (t.merge_ms) << ", \"labels\": " << num (t.labels_ms) << ", \"total\": " << num (t.total_ms)
@@ -153,6 +154,8 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
   return writeTextFileAtomically (path, [&] (std::ostream& out) {
     out << "{\n";
     writeCounts (out, r, info);
+    out << "  \"noise\": {\"sigma\": " << num (r.noise.sigma) << ", \"share\": " << num (r.noise.share)
+        << ", \"points_used\": " << r.noise.points_used << "},\n";
     writeInterior (out, r.interior);
     writeSegments (out, r, info.significance);
     writeAdjacency (out, r);

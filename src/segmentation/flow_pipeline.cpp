@@ -10,6 +10,7 @@
 #include "core/flow/stable_manifolds.h"
 #include "core/interior/facet_agreement.h"
 #include "core/interior/interior_labelling.h"
+#include "core/interior/noise_estimate.h"
 #include "core/labels/point_labels.h"
 #include "core/merging/manifold_merging.h"
 #include "core/preparation/point_preparation.h"
@@ -88,6 +89,16 @@ prepareStage (const Run& run, core::PreparedPoints& prepared)
   result.vertices = std::move (prepared.vertices);
   result.timings.preparation_ms = millisecondsSince (start);
   return Status::success ();
+}
+
+/** The sample's noise, from the vertices: reported (the automatic denoising still decides by its own
+  * signs, docs/method.md). */
+void
+noiseStage (FlowResult& result)
+{
+  const auto start = Clock::now ();
+  result.noise = core::estimateNoise (result.vertices, result.dimension);
+  result.timings.noise_ms = millisecondsSince (start);
 }
 
 Status
@@ -218,6 +229,8 @@ runStages (const Run& run)
   core::PreparedPoints prepared;
   if (const Status s = prepareStage (run, prepared); !s)
     return s;
+  run.report ("noise", 0.03);
+  noiseStage (run.result);
   run.report ("delaunay", 0.05);
   if (const Status s = delaunayStage (run, prepared); !s)
     return s;

@@ -48,7 +48,8 @@ struct PreparationParameters
 };
 
 /** \brief How stable manifolds merge into segments. All values are dimensionless; with
-  * sampling_tolerance, stump_ratio and compact_size 0 the result is the paper's segmentation. */
+  * sampling_tolerance, stump_ratio, compact_size and min_part_share 0 the result is the paper's
+  * segmentation. */
 struct MergeParameters
 {
   /** The paper's threshold (finite, > 0): two stable manifolds sharing a facet t merge when the
@@ -67,13 +68,17 @@ struct MergeParameters
   /** Largest compact segment, in balls (2D: discs) of its saddle's radius (finite, >= 0; 0 = no
     * compact pass). */
   double compact_size = 2.5;
+  /** Smallest part, as a share of the volume (2D: area) of all segments on its side (interior,
+    * exterior) in [0, 1): a smaller segment joins the neighbour on its side it shares its widest
+    * saddle with, so the reported features are parts, not slivers. 0 keeps every segment. */
+  double min_part_share = 0.0003;
 
   /** \brief Switches off what goes beyond the paper's rule (sampling tolerance, compact pass,
-    * stumps), keeping rho. */
+    * stumps, small parts), keeping rho. */
   void
   usePaperRule ()
   {
-    sampling_tolerance = stump_ratio = compact_size = 0.0;
+    sampling_tolerance = stump_ratio = compact_size = min_part_share = 0.0;
   }
 
   /** \brief The paper's rule alone at \a rho. */

@@ -93,6 +93,7 @@ struct FlowSegment
 struct StageTimings
 {
   double preparation_ms = 0.0; ///< finite filter, duplicates, dimension detection
+  double noise_ms = 0.0;       ///< the noise estimate
   double delaunay_ms = 0.0;    ///< CGAL triangulation and its conversion to cells in canonical order
   double flow_ms = 0.0;        ///< flow relation (exact predicates), circumradii, volumes, centroids
   double manifolds_ms = 0.0;   ///< strengthened flow, maxima, stable manifolds and their adjacency
@@ -102,6 +103,25 @@ struct StageTimings
   double labels_ms = 0.0;      ///< per-point labels
   double total_ms = 0.0;
 };
+
+/** \brief The sample's noise, estimated before the triangulation. */
+struct NoiseEstimate
+{
+  /** Median over the vertices used of the standard deviation of their 16 nearest neighbours along
+    * the neighbourhood's PCA normal (2D: the curve's normal), in the input's unit: about the
+    * noise's standard deviation on a noisy sample, near 0 on a clean dense one (curvature adds a
+    * little). */
+  double sigma = 0.0;
+  /** sigma as a share of the bounding-box diagonal of the vertices (dimensionless). */
+  double share = 0.0;
+  /** Vertices the estimate was computed on: all, or an evenly spaced subset of
+    * kNoiseEstimatePoints when there are more (neighbours taken among the subset). */
+  std::size_t points_used = 0;
+};
+
+/** \brief Most vertices the noise estimate looks at: enough for a stable median, few enough to cost
+  * little next to the triangulation. */
+constexpr std::size_t kNoiseEstimatePoints = 50000;
 
 /** \brief What the interior/exterior separation found. */
 struct InteriorReport
@@ -160,6 +180,8 @@ struct FlowResult
   /** The parameters the result was computed with (after remergeFlowSegmentation: its merge group). */
   FlowParameters parameters;
 
+  /** The sample's estimated noise. */
+  NoiseEstimate noise;
   /** Interior/exterior separation summary (computed = false when it was switched off). */
   InteriorReport interior;
   /** Segments reported as features, in order: indices into \a segments. Without interior/exterior

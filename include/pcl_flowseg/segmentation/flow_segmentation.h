@@ -73,6 +73,9 @@ public:
   /** \brief pcl_flowseg::MergeParameters::compact_size. */
   inline void setCompactSize (double size) { params_.merge.compact_size = size; }
   inline double getCompactSize () const { return params_.merge.compact_size; }
+  /** \brief pcl_flowseg::MergeParameters::min_part_share. */
+  inline void setMinPartShare (double share) { params_.merge.min_part_share = share; }
+  inline double getMinPartShare () const { return params_.merge.min_part_share; }
 
   /** \brief pcl_flowseg::PreparationParameters::dimension as a number: 0 = automatic, 2 or 3. */
   inline void setDimension (int dimension) { params_.preparation.dimension = static_cast<pcl_flowseg::DimensionMode> (dimension); }

@@ -11,13 +11,15 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <cmath>
 
 namespace pcl_flowseg {
 namespace core {
 
 namespace {
 
-/** Calls \a visit (i, mean, normal, variation) with the PCA of every point's neighbourhood. */
+/** Calls \a visit (i, mean, normal, variation, normal_variance) with the PCA of every point's
+  * neighbourhood (normal_variance: the variance of the neighbours along the normal). */
 template <typename Visit>
 void
 forEachNeighbourhood (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension, Visit visit)
@@ -27,7 +29,7 @@ forEachNeighbourhood (const std::vector<Eigen::Vector3d>& points, const Neighbou
     const std::size_t begin = hoods.first[i], end = hoods.first[i + 1];
     if (end - begin < static_cast<std::size_t> (dimension + 1))
     {
-      visit (i, points[i], Eigen::Vector3d::Zero (), 0.0);
+      visit (i, points[i], Eigen::Vector3d::Zero (), 0.0, 0.0);
       continue;
     }
     Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
@@ -45,9 +47,21 @@ forEachNeighbourhood (const std::vector<Eigen::Vector3d>& points, const Neighbou
     // belongs to the plane's normal, the next one to the curve's normal.
     const int normal_axis = dimension == 3 ? 0 : 1;
     const double top = dimension == 3 ? es.eigenvalues ().sum () : es.eigenvalues ()[1] + es.eigenvalues ()[2];
-    const double variation = top > 0 ? std::max (0.0, es.eigenvalues ()[normal_axis]) / top : 0.0;
-    visit (i, mean, Eigen::Vector3d (es.eigenvectors ().col (normal_axis)), variation);
+    const double normal_spread = std::max (0.0, es.eigenvalues ()[normal_axis]);
+    const double variation = top > 0 ? normal_spread / top : 0.0;
+    visit (i, mean, Eigen::Vector3d (es.eigenvectors ().col (normal_axis)), variation,
+           normal_spread / static_cast<double> (end - begin));
   }
+}
+
+/** The upper median of \a values (reordered); 0 when empty. */
+double
+median (std::vector<double>& values)
+{
+  if (values.empty ())
+    return 0.0;
+  std::nth_element (values.begin (), values.begin () + static_cast<long> (values.size () / 2), values.end ());
+  return values[values.size () / 2];
 }
 
 } // namespace
@@ -85,20 +99,27 @@ double
 medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
 {
   std::vector<double> variation (points.size (), 0.0);
-  forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const Eigen::Vector3d&, const Eigen::Vector3d&, double v) {
-    variation[i] = v;
+  forEachNeighbourhood (points, hoods, dimension,
+                        [&] (std::size_t i, const Eigen::Vector3d&, const Eigen::Vector3d&, double v, double) { variation[i] = v; });
+  return median (variation);
+}
+
+double
+medianNormalDeviation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
+{
+  std::vector<double> deviation (points.size (), 0.0);
+  forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const Eigen::Vector3d&, const Eigen::Vector3d&, double, double var) {
+    deviation[i] = std::sqrt (var);
   });
-  if (variation.empty ())
-    return 0.0;
-  std::nth_element (variation.begin (), variation.begin () + static_cast<long> (variation.size () / 2), variation.end ());
-  return variation[variation.size () / 2];
+  return median (deviation);
 }
 
 std::vector<Eigen::Vector3d>
 smoothPoints (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
 {
   std::vector<Eigen::Vector3d> out (points);
-  forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const Eigen::Vector3d& mean, const Eigen::Vector3d& normal, double) {
+  forEachNeighbourhood (points, hoods, dimension,
+                        [&] (std::size_t i, const Eigen::Vector3d& mean, const Eigen::Vector3d& normal, double, double) {
     out[i] = points[i] - (points[i] - mean).dot (normal) * normal;
   });
   return out;

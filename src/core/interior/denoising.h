@@ -42,6 +42,12 @@ nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points);
 double
 medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension);
 
+/** \brief Median over the points of the standard deviation of their neighbourhood along its PCA
+  * normal (2D: the curve's normal), in the points' unit: about the noise's standard deviation on
+  * a noisy sample, near 0 on a clean dense one. */
+double
+medianNormalDeviation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension);
+
 /** \brief One smoothing pass: every point is projected onto the PCA plane (2D: line) of its
   * neighbourhood, through the neighbourhood's centroid. */
 std::vector<Eigen::Vector3d>

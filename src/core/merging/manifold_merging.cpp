@@ -9,6 +9,7 @@
 #include "core/merging/merge_rule.h"
 #include "core/merging/segment_assembly.h"
 #include "core/merging/side_flooding.h"
+#include "core/merging/small_part_merge.h"
 #include "core/merging/stump_reclaim.h"
 
 #include <numeric>
@@ -29,6 +30,7 @@ mergeManifolds (const MergeParameters& params, FlowResult& result)
   assignCellsToTheirSide (result, groups);
   if (params.stump_ratio > 0.0)
     reclaimStumps (result, groupHeights (result, groups), params.stump_ratio, groups.of_cell);
+  absorbSmallGroups (result, params.min_part_share, groups);
   storeSegments (groups, result);
 }
 

@@ -17,8 +17,11 @@ namespace core {
   *   2. the compact pass, when compact_size > 0 and compact_rho > rho >= 1 (compact_merge.h);
   *   3. every cell joins a group of its own side (side_flooding.h);
   *   4. thin parts take back their stumps, when stump_ratio > 0 (stump_reclaim.h);
-  *   5. the groups become ordered segments (segment_assembly.h).
-  * With sampling_tolerance, stump_ratio and compact_size 0 this is the paper's segmentation. */
+  *   5. segments too small to be parts join a neighbour, when min_part_share > 0
+  *      (small_part_merge.h);
+  *   6. the groups become ordered segments (segment_assembly.h).
+  * With sampling_tolerance, stump_ratio, compact_size and min_part_share 0 this is the paper's
+  * segmentation. */
 void
 mergeManifolds (const MergeParameters& params, FlowResult& result);
 

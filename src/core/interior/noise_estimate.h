@@ -1,0 +1,20 @@
+/*
+ * pcl_flowseg - internal: the noise of a point sample, estimated from its local neighbourhoods.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/common/flow_result.h>
+
+#include <vector>
+
+namespace pcl_flowseg {
+namespace core {
+
+/** \brief NoiseEstimate of \a vertices (unique, finite) of a \a dimension-D sample: on all of them,
+  * or on every k-th when there are more than kNoiseEstimatePoints. */
+NoiseEstimate
+estimateNoise (const std::vector<Eigen::Vector3d>& vertices, int dimension);
+
+} // namespace core
+} // namespace pcl_flowseg
