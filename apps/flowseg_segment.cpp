@@ -122,11 +122,12 @@ printSummary (const Options& o, const pcl_flowseg::FlowResult& r, double read_ms
     interior += s.interior == 1;
   const std::size_t significant = pcl_flowseg::significantSegments (r, r.features, o.significance).size ();
   std::fprintf (stderr,
-                "%dD: %zu points (%zu non-finite, %zu duplicates), %zu cells, %zu maxima, "
+                "%dD: %zu points (%zu non-finite, %zu duplicates, %zu outliers), %zu cells, %zu maxima, "
                 "%zu segments after merging with rho=%g (%zu interior), %zu features reported (%zu significant), %zu points unlabelled\n",
-                r.dimension, r.input_points, r.non_finite_points, r.duplicate_points, r.cells.size (), r.maxima.size (),
+                r.dimension, r.input_points, r.non_finite_points, r.duplicate_points, r.outlier_points, r.cells.size (), r.maxima.size (),
                 r.segments.size (), r.parameters.merge.rho, interior, r.features.size (), significant, r.unlabelledPoints ());
-  std::fprintf (stderr, "noise: estimated sigma %.4g (%.3f%% of the bounding-box diagonal)\n", r.noise.sigma, 100.0 * r.noise.share);
+  std::fprintf (stderr, "noise: estimated sigma %.4g (%.3f%% of the bounding-box diagonal), %.3f%% of the points isolated\n",
+                r.noise.sigma, 100.0 * r.noise.share, 100.0 * r.noise.isolated_share);
   if (r.interior.computed)
     std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s, %zu samples off the boundary, %d smoothing pass(es)\n",
                   r.interior.inside_volume, r.interior.inside_cells, r.interior.boundary_facets,

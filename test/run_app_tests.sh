@@ -135,6 +135,10 @@ expect "segment a scan from its sensor origin" 0 "noise: estimated sigma" -- "$s
 expect "scan from inside the mesh" 1 "outside the mesh's bounding sphere" -- "$smp" "$work/tet.off" --scan-from 0.2,0.2,0.2 -o "$work/x.pcd"
 expect "scan viewpoint malformed" 2 "scan-from" -- "$smp" "$work/tet.off" --scan-from 1,2 -o "$work/x.pcd"
 expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off" -n 500 --outliers 0.02 -o "$work/out.pcd"
+expect "outliers found and left out" 0 "left out as outliers" -- "$seg" "$work/out.pcd" -o "$work/out"
+grep -q '"outlier_points": [1-9]' "$work/out.json"; check "the JSON counts the outliers" $?
+expect "outliers kept on request" 0 " 0 outliers)" -- "$seg" "$work/out.pcd" --outliers off -o "$work/out"
+expect "outlier mode absurd" 2 "outliers" -- "$seg" "$src/samples/hand2d.pcd" --outliers sometimes
 expect "sampler bad outliers" 2 "outliers" -- "$smp" "$work/tet.off" --outliers 2 -o "$work/x.pcd"
 expect "smallest part share absurd" 2 "min-part-share" -- "$seg" "$src/samples/hand2d.pcd" --min-part-share 1
 

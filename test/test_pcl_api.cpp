@@ -244,6 +244,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   seg.setMinPartShare (0.01);
   seg.setDimension (2);
   seg.setPlanarTolerance (1e-6);
+  seg.setOutlierRemoval (pcl_flowseg::OutlierRemoval::Always);
   seg.setSeparateInterior (true);
   seg.setDenoising (pcl_flowseg::Denoising::Off);
   seg.setFeatureSide (pcl_flowseg::FeatureSide::Both);
@@ -258,6 +259,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   EXPECT_EQ (p.merge.min_part_share, 0.01);
   EXPECT_EQ (p.preparation.dimension, pcl_flowseg::DimensionMode::Planar);
   EXPECT_EQ (p.preparation.planar_tolerance, 1e-6);
+  EXPECT_EQ (p.preparation.outliers, pcl_flowseg::OutlierRemoval::Always);
   EXPECT_EQ (p.interior.denoising, pcl_flowseg::Denoising::Off);
   EXPECT_EQ (p.features, pcl_flowseg::FeatureSide::Both);
   EXPECT_EQ (p.execution.threads, 1u);
@@ -267,6 +269,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   other.setParameters (p);
   EXPECT_EQ (other.getRho (), 1.3);
   EXPECT_EQ (other.getDimension (), 2);
+  EXPECT_EQ (other.getOutlierRemoval (), pcl_flowseg::OutlierRemoval::Always);
   EXPECT_EQ (other.getFeatureSide (), pcl_flowseg::FeatureSide::Both);
   EXPECT_EQ (other.getMemoryLimit (), std::size_t (1) << 33);
 
@@ -279,6 +282,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   const pcl_flowseg::FlowParameters& used = other.getResult ().parameters;
   expectSameMerge (used.merge, p.merge);
   EXPECT_EQ (used.preparation.dimension, p.preparation.dimension);
+  EXPECT_EQ (used.preparation.outliers, p.preparation.outliers);
   EXPECT_EQ (used.features, p.features);
   ASSERT_TRUE (used.interior.viewpoint.has_value ());
   EXPECT_EQ (*used.interior.viewpoint, Eigen::Vector3d (0.5, 9.0, 0.0));

@@ -54,6 +54,11 @@ addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
             std::vector<std::pair<std::string, pcl_flowseg::FeatureSide>>{{"interior", pcl_flowseg::FeatureSide::Interior},
                                                                            {"exterior", pcl_flowseg::FeatureSide::Exterior},
                                                                            {"both", pcl_flowseg::FeatureSide::Both}});
+  p.choice ("--outliers", "MODE", "auto | off | on: leave out isolated points (PCL's statistical\noutlier removal); auto: when the sample shows isolated points",
+            params.preparation.outliers,
+            std::vector<std::pair<std::string, pcl_flowseg::OutlierRemoval>>{{"auto", pcl_flowseg::OutlierRemoval::Automatic},
+                                                                              {"off", pcl_flowseg::OutlierRemoval::Off},
+                                                                              {"on", pcl_flowseg::OutlierRemoval::Always}});
   pcl_flowseg::InteriorParameters* in = &params.interior;
   p.action ("--no-interior", "skip interior/exterior separation: the paper's raw segmentation of\nthe whole convex hull, every segment reported",
             [in] () { in->separate = false; });

@@ -132,6 +132,7 @@ flowNumber (Group pcl_flowseg::FlowParameters::*group, double Group::*field)
 
 const std::vector<std::string> kDimensionNames = {"automatic", "", "planar", "spatial"};
 const std::vector<std::string> kDenoisingNames = {"automatic", "off", "always"};
+const std::vector<std::string> kOutlierNames = {"automatic", "off", "always"};
 const std::vector<std::string> kFeatureNames = {"interior", "exterior", "both"};
 
 /** The flow keywords: every FlowParameters field under its own name. */
@@ -150,6 +151,12 @@ addFlowKeywords (std::map<std::string, Keyword>& k)
                       return r;
                     }};
   k["planar_tolerance"] = {kFlowArguments, flowNumber (&FP::preparation, &pcl_flowseg::PreparationParameters::planar_tolerance)};
+  k["outliers"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
+                     std::size_t i = 0;
+                     const Conversion r = toChoice (n, v, kOutlierNames, i);
+                     c.flow.preparation.outliers = static_cast<pcl_flowseg::OutlierRemoval> (i);
+                     return r;
+                   }};
   k["rho"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::rho)};
   k["sampling_tolerance"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::sampling_tolerance)};
   k["stump_ratio"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::stump_ratio)};
@@ -276,6 +283,7 @@ flowArguments (const pcl_flowseg::FlowParameters& p)
                                                                                                  : 3;
   a.emplace_back ("dimension", kDimensionNames[dimension]);
   a.emplace_back ("planar_tolerance", p.preparation.planar_tolerance);
+  a.emplace_back ("outliers", kOutlierNames[static_cast<std::size_t> (p.preparation.outliers) % 3]);
   a.emplace_back ("rho", p.merge.rho);
   a.emplace_back ("sampling_tolerance", p.merge.sampling_tolerance);
   a.emplace_back ("stump_ratio", p.merge.stump_ratio);

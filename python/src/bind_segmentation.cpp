@@ -249,7 +249,7 @@ bindResult (py::module_& m)
   py::class_<Segmentation> (m, "Segmentation", "The result of segment(): labels, features, adjacency, timings.")
       .def_property_readonly ("labels", &labels,
                               "Per input point (in input order) the index of its feature in features, -1 for none "
-                              "(non-finite points, points touching no reported feature). int64 array.")
+                              "(non-finite points, outliers left out, points touching no reported feature). int64 array.")
       .def_property_readonly ("features", &features, "The reported features (interior ones by decreasing volume).")
       .def_property_readonly ("significant", [] (const Segmentation& s) {
             std::vector<int> out;
@@ -268,14 +268,18 @@ bindResult (py::module_& m)
       .def_property_readonly ("input_points", [] (const Segmentation& s) { return s.result->input_points; })
       .def_property_readonly ("non_finite_points", [] (const Segmentation& s) { return s.result->non_finite_points; })
       .def_property_readonly ("duplicate_points", [] (const Segmentation& s) { return s.result->duplicate_points; })
+      .def_property_readonly ("outlier_points", [] (const Segmentation& s) { return s.result->outlier_points; },
+                              "Points left out as isolated (label -1).")
       .def_property_readonly ("unlabelled_points", [] (const Segmentation& s) { return s.result->unlabelledPoints (); })
       .def_property_readonly ("noise", [] (const Segmentation& s) {
         py::dict d;
         d["sigma"] = s.result->noise.sigma;
         d["share"] = s.result->noise.share;
+        d["isolated_share"] = s.result->noise.isolated_share;
         d["points_used"] = s.result->noise.points_used;
         return d;
-      }, "The sample's estimated noise: sigma (input units), share (of the bounding-box diagonal), points_used.")
+      }, "The sample's estimated noise: sigma (input units), share (of the bounding-box diagonal), isolated_share "
+         "(share of the points far from their neighbours), points_used.")
       .def_property_readonly ("interior", [] (const Segmentation& s) { return interiorReport (s.result->interior); },
                               "What the interior/exterior separation found.")
       .def_property_readonly ("warnings", [] (const Segmentation& s) { return s.result->warnings; })
@@ -311,7 +315,7 @@ points: (n, 2) or (n, 3) float32/float64 array (2 columns: a 2D shape). NaN/Inf 
     and counted (label -1); duplicates take the label of their first copy.
 normals: None or (n, 3) array of outward normals (evidence for the interior/exterior separation).
 progress: None or a callable(stage: str, fraction: float), called during the run.
-Keywords (see defaults()): dimension, planar_tolerance, rho, sampling_tolerance, stump_ratio,
+Keywords (see defaults()): dimension, planar_tolerance, outliers, rho, sampling_tolerance, stump_ratio,
     compact_rho, compact_size, min_part_share, separate, denoising, viewpoint, features, threads, memory_limit,
     significance.
 Raises ValueError for input that cannot be segmented or a parameter out of range, TypeError for

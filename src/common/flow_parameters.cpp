@@ -43,6 +43,9 @@ checkParameters (const FlowParameters& p)
     return Status::error ("dimension must be 0 (automatic), 2 or 3, got " + std::to_string (static_cast<int> (d)));
   if (!std::isfinite (p.preparation.planar_tolerance) || p.preparation.planar_tolerance < 0.0)
     return Status::error ("planar tolerance must be a finite number >= 0" + got (p.preparation.planar_tolerance));
+  const OutlierRemoval o = p.preparation.outliers;
+  if (o != OutlierRemoval::Automatic && o != OutlierRemoval::Off && o != OutlierRemoval::Always)
+    return Status::error ("outlier removal must be automatic, off or always");
   if (const Status merge = checkMergeParameters (p.merge); !merge)
     return merge;
   const Denoising n = p.interior.denoising;

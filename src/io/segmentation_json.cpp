@@ -44,7 +44,9 @@ parametersJson (const FlowParameters& p)
   const Denoising n = p.interior.denoising;
   std::string s = "{\"preparation\": {\"dimension\": ";
   s += d == DimensionMode::Automatic ? "\"auto\"" : d == DimensionMode::Planar ? "2" : "3";
-  s += ", \"planar_tolerance\": " + num (p.preparation.planar_tolerance) + "}";
+  s += ", \"planar_tolerance\": " + num (p.preparation.planar_tolerance) + ", \"outliers\": ";
+  const OutlierRemoval o = p.preparation.outliers;
+  s += o == OutlierRemoval::Automatic ? "\"auto\"}" : o == OutlierRemoval::Off ? "\"off\"}" : "\"always\"}";
   s += ", \"merge\": {\"rho\": " + num (p.merge.rho) + ", \"sampling_tolerance\": " + num (p.merge.sampling_tolerance) +
        ", \"stump_ratio\": " + num (p.merge.stump_ratio) + ", \"compact_rho\": " + num (p.merge.compact_rho) +
        ", \"compact_size\": " + num (p.merge.compact_size) + ", \"min_part_share\": " + num (p.merge.min_part_share) + "}";
@@ -67,6 +69,7 @@ writeCounts (std::ostream& out, const FlowResult& r, const RunInfo& info)
   out << "  \"points\": " << r.input_points << ",\n";
   out << "  \"non_finite_points\": " << r.non_finite_points << ",\n";
   out << "  \"duplicate_points\": " << r.duplicate_points << ",\n";
+  out << "  \"outlier_points\": " << r.outlier_points << ",\n";
   out << "  \"vertices\": " << r.vertices.size () << ",\n";
   out << "  \"cells\": " << r.cells.size () << ",\n";
   out << "  \"maxima\": " << r.maxima.size () << ",\n";
@@ -155,7 +158,8 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
     out << "{\n";
     writeCounts (out, r, info);
     out << "  \"noise\": {\"sigma\": " << num (r.noise.sigma) << ", \"share\": " << num (r.noise.share)
-        << ", \"points_used\": " << r.noise.points_used << "},\n";
+        << ", \"isolated_share\": " << num (r.noise.isolated_share) << ", \"points_used\": " << r.noise.points_used
+        << "},\n";
     writeInterior (out, r.interior);
     writeSegments (out, r, info.significance);
     writeAdjacency (out, r);

@@ -13,6 +13,7 @@
 #include "core/interior/noise_estimate.h"
 #include "core/labels/point_labels.h"
 #include "core/merging/manifold_merging.h"
+#include "core/preparation/outlier_removal.h"
 #include "core/preparation/point_preparation.h"
 #include "core/support/parallel.h"
 
@@ -74,7 +75,46 @@ struct Run
   }
 };
 
-/** Finite filter, duplicates, dimension: the vertices of the triangulation. */
+/** The sample's noise and isolated points, from the vertices: reported, and the isolated share
+  * decides the automatic outlier removal (the automatic denoising still decides by its own signs,
+  * docs/method.md). */
+void
+noiseStage (const core::PreparedPoints& prepared, FlowResult& result)
+{
+  const auto start = Clock::now ();
+  result.noise = core::estimateNoise (prepared.vertices, prepared.dimension);
+  result.timings.noise_ms = millisecondsSince (start);
+}
+
+/** Whether this run leaves out isolated points: forced, off, or by the sample's isolated share. */
+bool
+wantsOutlierRemoval (const PreparationParameters& params, const NoiseEstimate& noise)
+{
+  switch (params.outliers)
+  {
+    case OutlierRemoval::Always: return true;
+    case OutlierRemoval::Off: return false;
+    case OutlierRemoval::Automatic: break;
+  }
+  return noise.isolated_share > kIsolatedShare;
+}
+
+/** PCL's StatisticalOutlierRemoval on the vertices when wanted; counted and warned about. */
+void
+outlierStage (const Run& run, core::PreparedPoints& prepared)
+{
+  FlowResult& result = run.result;
+  if (!wantsOutlierRemoval (run.params.preparation, result.noise))
+    return;
+  const auto start = Clock::now ();
+  result.outlier_points = core::removeOutliers (prepared);
+  if (result.outlier_points > 0)
+    result.warnings.push_back (std::to_string (result.outlier_points) +
+                               " isolated point(s) left out as outliers (no segment); --outliers off keeps them");
+  result.timings.preparation_ms += millisecondsSince (start);
+}
+
+/** Finite filter, duplicates, dimension, noise, outliers: the vertices of the triangulation. */
 Status
 prepareStage (const Run& run, core::PreparedPoints& prepared)
 {
@@ -82,23 +122,16 @@ prepareStage (const Run& run, core::PreparedPoints& prepared)
   FlowResult& result = run.result;
   if (const Status s = core::preparePoints (run.points, run.params.preparation, prepared, result.warnings); !s)
     return s;
+  result.timings.preparation_ms = millisecondsSince (start);
+  run.report ("noise", 0.03);
+  noiseStage (prepared, result);
+  outlierStage (run, prepared);
   result.dimension = prepared.dimension;
   result.non_finite_points = prepared.non_finite;
   result.duplicate_points = prepared.duplicates;
   result.point_to_vertex = std::move (prepared.point_to_vertex);
   result.vertices = std::move (prepared.vertices);
-  result.timings.preparation_ms = millisecondsSince (start);
   return Status::success ();
-}
-
-/** The sample's noise, from the vertices: reported (the automatic denoising still decides by its own
-  * signs, docs/method.md). */
-void
-noiseStage (FlowResult& result)
-{
-  const auto start = Clock::now ();
-  result.noise = core::estimateNoise (result.vertices, result.dimension);
-  result.timings.noise_ms = millisecondsSince (start);
 }
 
 Status
@@ -229,8 +262,6 @@ runStages (const Run& run)
   core::PreparedPoints prepared;
   if (const Status s = prepareStage (run, prepared); !s)
     return s;
-  run.report ("noise", 0.03);
-  noiseStage (run.result);
   run.report ("delaunay", 0.05);
   if (const Status s = delaunayStage (run, prepared); !s)
     return s;

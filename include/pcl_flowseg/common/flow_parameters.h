@@ -29,6 +29,14 @@ enum class Denoising
   Always = 2     ///< always (at least one smoothing pass)
 };
 
+/** \brief Whether isolated points are removed before the triangulation. */
+enum class OutlierRemoval
+{
+  Automatic = 0, ///< when the sample shows isolated points (NoiseEstimate::isolated_share)
+  Off = 1,       ///< never: every point is a vertex
+  Always = 2     ///< always
+};
+
 /** \brief Which segments are reported as features. */
 enum class FeatureSide
 {
@@ -45,6 +53,10 @@ struct PreparationParameters
   /** Automatic mode chooses 2D when the spread of the points normal to their best-fit plane is at
     * most this share of the bounding-box diagonal (dimensionless, >= 0). */
   double planar_tolerance = 1e-9;
+  /** Outliers: points PCL's StatisticalOutlierRemoval finds far from their neighbours are left
+    * out (labelled kNoSegment, counted in FlowResult::outlier_points). Automatic: only when the
+    * sample shows isolated points. */
+  OutlierRemoval outliers = OutlierRemoval::Automatic;
 };
 
 /** \brief How stable manifolds merge into segments. All values are dimensionless; with

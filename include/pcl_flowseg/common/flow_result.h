@@ -114,14 +114,23 @@ struct NoiseEstimate
   double sigma = 0.0;
   /** sigma as a share of the bounding-box diagonal of the vertices (dimensionless). */
   double share = 0.0;
-  /** Vertices the estimate was computed on: all, or an evenly spaced subset of
-    * kNoiseEstimatePoints when there are more (neighbours taken among the subset). */
+  /** Vertices whose neighbourhoods the estimate measured: all, or an evenly spaced
+    * kNoiseEstimatePoints when there are more (their neighbours taken among all vertices, or an
+    * evenly spaced 50,000 of them). */
   std::size_t points_used = 0;
+  /** Share of those vertices whose 16th nearest neighbour lies more than kIsolatedDistance times
+    * the median such distance away: isolated points, outliers. */
+  double isolated_share = 0.0;
 };
 
-/** \brief Most vertices the noise estimate looks at: enough for a stable median, few enough to cost
-  * little next to the triangulation. */
-constexpr std::size_t kNoiseEstimatePoints = 50000;
+/** \brief Most vertices whose neighbourhoods the noise estimate measures: enough for a stable
+  * median and an isolated share to 0.025%, few enough to cost little next to the triangulation. */
+constexpr std::size_t kNoiseEstimatePoints = 4000;
+/** \brief A vertex is isolated when its 16th nearest neighbour lies this many times the median
+  * distance away (a noisy surface sample stays within about twice the median). */
+constexpr double kIsolatedDistance = 5.0;
+/** \brief Share of isolated vertices above which automatic outlier removal acts. */
+constexpr double kIsolatedShare = 0.001;
 
 /** \brief What the interior/exterior separation found. */
 struct InteriorReport
@@ -156,6 +165,7 @@ struct FlowResult
   std::size_t input_points = 0;      ///< points handed in (after setIndices)
   std::size_t non_finite_points = 0; ///< points skipped for NaN/Inf coordinates
   std::size_t duplicate_points = 0;  ///< points equal to an earlier point (labelled like it)
+  std::size_t outlier_points = 0;    ///< points left out as outliers (label kNoSegment)
 
   /** Coordinates of the unique finite points (the triangulation's vertices), input frame, in a
     * spatial order (along a Z-order curve), not in input order: use point_to_vertex. */

@@ -83,6 +83,9 @@ public:
   /** \brief pcl_flowseg::PreparationParameters::planar_tolerance. */
   inline void setPlanarTolerance (double tolerance) { params_.preparation.planar_tolerance = tolerance; }
   inline double getPlanarTolerance () const { return params_.preparation.planar_tolerance; }
+  /** \brief pcl_flowseg::PreparationParameters::outliers. */
+  inline void setOutlierRemoval (pcl_flowseg::OutlierRemoval mode) { params_.preparation.outliers = mode; }
+  inline pcl_flowseg::OutlierRemoval getOutlierRemoval () const { return params_.preparation.outliers; }
 
   /** \brief pcl_flowseg::InteriorParameters::separate. */
   inline void setSeparateInterior (bool separate) { params_.interior.separate = separate; }

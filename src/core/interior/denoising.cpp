@@ -18,18 +18,19 @@ namespace core {
 
 namespace {
 
-/** Calls \a visit (i, mean, normal, variation, normal_variance) with the PCA of every point's
-  * neighbourhood (normal_variance: the variance of the neighbours along the normal). */
+/** Calls \a visit (i, mean, normal, variation, normal_variance) with the PCA of the neighbourhood
+  * in every row i of \a hoods (normal_variance: the variance of the neighbours along the normal;
+  * a row too small for a fit gives a zero normal). */
 template <typename Visit>
 void
 forEachNeighbourhood (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension, Visit visit)
 {
-  for (std::size_t i = 0; i < points.size (); ++i)
+  for (std::size_t i = 0; i + 1 < hoods.first.size (); ++i)
   {
     const std::size_t begin = hoods.first[i], end = hoods.first[i + 1];
     if (end - begin < static_cast<std::size_t> (dimension + 1))
     {
-      visit (i, points[i], Eigen::Vector3d::Zero (), 0.0, 0.0);
+      visit (i, Eigen::Vector3d::Zero (), Eigen::Vector3d::Zero (), 0.0, 0.0);
       continue;
     }
     Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
@@ -67,12 +68,12 @@ median (std::vector<double>& values)
 } // namespace
 
 Neighbourhoods
-nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points)
+nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points, std::size_t stride)
 {
   Neighbourhoods h;
-  const std::size_t n = points.size ();
-  h.first.assign (n + 1, 0);
-  if (n == 0)
+  const std::size_t n = points.size (), rows = stride > 0 ? (n + stride - 1) / stride : 0;
+  h.first.assign (rows + 1, 0);
+  if (rows == 0)
     return h;
   const std::size_t k = std::min<std::size_t> (kNoiseNeighbours, n);
   // Coordinates relative to the first point keep float precision for large offsets.
@@ -80,25 +81,32 @@ nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points)
   for (std::size_t i = 0; i < n; ++i)
     for (int a = 0; a < 3; ++a)
       data[3 * i + static_cast<std::size_t> (a)] = static_cast<float> (points[i][a] - points[0][a]);
-  flann::Matrix<float> matrix (data.data (), n, 3);
+  std::vector<float> query_data (3 * rows);
+  for (std::size_t r = 0; r < rows; ++r)
+    std::copy_n (data.begin () + static_cast<long> (3 * r * stride), 3, query_data.begin () + static_cast<long> (3 * r));
+  flann::Matrix<float> matrix (data.data (), n, 3), queries (query_data.data (), rows, 3);
   flann::Index<flann::L2_Simple<float>> index (matrix, flann::KDTreeSingleIndexParams (10));
   index.buildIndex ();
-  h.ids.resize (n * k);
-  std::vector<float> distances (n * k);
-  flann::Matrix<int> ids (h.ids.data (), n, k);
-  flann::Matrix<float> dist (distances.data (), n, k);
+  h.ids.resize (rows * k);
+  std::vector<float> distances (rows * k);
+  flann::Matrix<int> ids (h.ids.data (), rows, k);
+  flann::Matrix<float> dist (distances.data (), rows, k);
   flann::SearchParams search (flann::FLANN_CHECKS_UNLIMITED, 0.0f, false);
   search.cores = 0; // all cores
-  index.knnSearch (matrix, ids, dist, k, search);
-  for (std::size_t i = 0; i <= n; ++i)
-    h.first[i] = i * k;
+  index.knnSearch (queries, ids, dist, k, search);
+  for (std::size_t r = 0; r <= rows; ++r)
+    h.first[r] = r * k;
+  h.reach.resize (rows);
+  for (std::size_t r = 0; r < rows; ++r) // squared L2 distances, unsorted
+    h.reach[r] = std::sqrt (*std::max_element (distances.begin () + static_cast<long> (r * k),
+                                               distances.begin () + static_cast<long> ((r + 1) * k)));
   return h;
 }
 
 double
 medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
 {
-  std::vector<double> variation (points.size (), 0.0);
+  std::vector<double> variation (hoods.first.size () - 1, 0.0);
   forEachNeighbourhood (points, hoods, dimension,
                         [&] (std::size_t i, const Eigen::Vector3d&, const Eigen::Vector3d&, double v, double) { variation[i] = v; });
   return median (variation);
@@ -107,7 +115,7 @@ medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhood
 double
 medianNormalDeviation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
 {
-  std::vector<double> deviation (points.size (), 0.0);
+  std::vector<double> deviation (hoods.first.size () - 1, 0.0);
   forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const Eigen::Vector3d&, const Eigen::Vector3d&, double, double var) {
     deviation[i] = std::sqrt (var);
   });

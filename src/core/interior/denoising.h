@@ -24,25 +24,28 @@ constexpr int kNoiseNeighbours = 16;
 /** Upper bound on smoothing passes. */
 constexpr int kMaxSmoothingPasses = 4;
 
-/** \brief Neighbourhoods as compressed rows: the neighbours of v are ids[first[v]] ..
-  * ids[first[v+1]-1] (v itself included). */
+/** \brief Neighbourhoods as compressed rows: the neighbours of the r-th query point are
+  * ids[first[r]] .. ids[first[r+1]-1] (the point itself included); with every point a query, row r
+  * is point r. */
 struct Neighbourhoods
 {
   std::vector<std::size_t> first;
   std::vector<int> ids;
+  std::vector<float> reach; ///< per point: the distance to its farthest neighbour in the row
 };
 
-/** \brief The kNoiseNeighbours nearest points of every point (FLANN kd-tree, both cores). */
+/** \brief The kNoiseNeighbours nearest points, among all \a points, of every \a stride-th point
+  * (rows for points 0, stride, 2 stride, ...; FLANN kd-tree, both cores). */
 Neighbourhoods
-nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points);
+nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points, std::size_t stride = 1);
 
-/** \brief Median over the points of their surface variation: the smallest PCA eigenvalue of the
+/** \brief Median over the rows of \a hoods of their surface variation: the smallest PCA eigenvalue of the
   * neighbourhood over the sum of the d largest (d = 3: surfaces; d = 2: curves in a plane, whose
   * third eigenvalue is zero). */
 double
 medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension);
 
-/** \brief Median over the points of the standard deviation of their neighbourhood along its PCA
+/** \brief Median over the rows of \a hoods of the standard deviation of their neighbourhood along its PCA
   * normal (2D: the curve's normal), in the points' unit: about the noise's standard deviation on
   * a noisy sample, near 0 on a clean dense one. */
 double

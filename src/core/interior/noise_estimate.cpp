@@ -6,8 +6,16 @@
 
 #include "core/interior/denoising.h"
 
+#include <algorithm>
+
 namespace pcl_flowseg {
 namespace core {
+
+namespace {
+/** Most vertices the neighbours are looked for among: a subset thins the sample evenly, the
+  * neighbourhoods stay small against the shape's features. */
+constexpr std::size_t kNoiseIndexPoints = 50000;
+} // namespace
 
 NoiseEstimate
 estimateNoise (const std::vector<Eigen::Vector3d>& vertices, int dimension)
@@ -15,7 +23,7 @@ estimateNoise (const std::vector<Eigen::Vector3d>& vertices, int dimension)
   NoiseEstimate estimate;
   if (vertices.size () <= static_cast<std::size_t> (dimension))
     return estimate;
-  const std::size_t stride = (vertices.size () + kNoiseEstimatePoints - 1) / kNoiseEstimatePoints;
+  const std::size_t stride = (vertices.size () + kNoiseIndexPoints - 1) / kNoiseIndexPoints;
   std::vector<Eigen::Vector3d> used;
   used.reserve (vertices.size () / stride + 1);
   for (std::size_t i = 0; i < vertices.size (); i += stride)
@@ -26,10 +34,17 @@ estimateNoise (const std::vector<Eigen::Vector3d>& vertices, int dimension)
     lo = lo.cwiseMin (v);
     hi = hi.cwiseMax (v);
   }
-  estimate.sigma = medianNormalDeviation (used, nearestNeighbourhoods (used), dimension);
+  const std::size_t query_stride = (used.size () + kNoiseEstimatePoints - 1) / kNoiseEstimatePoints;
+  const Neighbourhoods hoods = nearestNeighbourhoods (used, query_stride);
+  estimate.sigma = medianNormalDeviation (used, hoods, dimension);
+  std::vector<float> reach = hoods.reach;
+  std::nth_element (reach.begin (), reach.begin () + static_cast<long> (reach.size () / 2), reach.end ());
+  const double limit = kIsolatedDistance * reach[reach.size () / 2];
+  const auto isolated = std::count_if (hoods.reach.begin (), hoods.reach.end (), [&] (float r) { return r > limit; });
+  estimate.isolated_share = static_cast<double> (isolated) / static_cast<double> (hoods.reach.size ());
   const double diagonal = (hi - lo).norm ();
   estimate.share = diagonal > 0.0 ? estimate.sigma / diagonal : 0.0;
-  estimate.points_used = used.size ();
+  estimate.points_used = hoods.reach.size ();
   return estimate;
 }
 

@@ -11,8 +11,9 @@
 namespace pcl_flowseg {
 namespace core {
 
-/** \brief NoiseEstimate of \a vertices (unique, finite) of a \a dimension-D sample: on all of them,
-  * or on every k-th when there are more than kNoiseEstimatePoints. */
+/** \brief NoiseEstimate of \a vertices (unique, finite) of a \a dimension-D sample: the
+  * neighbourhoods of at most kNoiseEstimatePoints evenly spaced vertices, their neighbours among
+  * all vertices (an evenly spaced 50,000 of them when there are more). */
 NoiseEstimate
 estimateNoise (const std::vector<Eigen::Vector3d>& vertices, int dimension);
 

@@ -1,0 +1,27 @@
+/*
+ * pcl_flowseg - internal: isolated points (outliers) left out before the triangulation.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include "core/preparation/point_preparation.h"
+
+#include <cstddef>
+
+namespace pcl_flowseg {
+namespace core {
+
+/** \brief Neighbours PCL's StatisticalOutlierRemoval averages the distance over. */
+constexpr int kOutlierNeighbours = 8;
+/** \brief A point is an outlier when its mean neighbour distance exceeds the mean over all points by
+  * this many standard deviations. */
+constexpr double kOutlierDeviations = 3.0;
+
+/** \brief Removes from \a prepared the vertices PCL's StatisticalOutlierRemoval rejects: the vertex
+  * list (and the plane coordinates in 2D) shrink, their input points map to -1 (no segment).
+  * Keeps every vertex when fewer than dimension + 2 would remain. Returns the input points left out. */
+std::size_t
+removeOutliers (PreparedPoints& prepared);
+
+} // namespace core
+} // namespace pcl_flowseg
