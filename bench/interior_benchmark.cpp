@@ -126,7 +126,7 @@ parseOptions (int argc, char** argv, Options& o)
   return true;
 }
 
-struct Summary { double worst = 1.0, sum = 0.0; int runs = 0, closed = 0, manifold = 0; };
+struct Summary { double worst = 1.0, sum = 0.0, iou_worst = 1.0, iou_sum = 0.0; int runs = 0, closed = 0, manifold = 0; };
 struct PivotRow { std::string mesh; std::vector<std::string> cells; };
 
 /** One run: \a count points with noise \a noise (share of the diagonal) on \a mesh, its row printed,
@@ -145,16 +145,17 @@ evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, con
   const auto status = pcl_flowseg::runFlowSegmentation (pts, params, r);
   if (!status)
   {
-    std::printf ("| %s | %.0f | %.2f%% | failed: %s | | | | | |\n", name.c_str (), count, 100 * noise, status.message.c_str ());
+    std::printf ("| %s | %.0f | %.2f%% | failed: %s | | | | | | |\n", name.c_str (), count, 100 * noise, status.message.c_str ());
     return;
   }
-  double agree = 0.0, total = 0.0, labelled_in = 0.0, truly_in = 0.0;
+  double agree = 0.0, total = 0.0, labelled_in = 0.0, truly_in = 0.0, both_in = 0.0;
   for (const auto& c : r.cells)
   {
     total += c.volume;
     const bool t = truth.inside (c.centroid);
     if ((c.inside == 1) == t)
       agree += c.volume;
+    both_in += c.inside == 1 && t ? c.volume : 0.0;
     labelled_in += c.inside == 1 ? c.volume : 0.0;
     truly_in += t ? c.volume : 0.0;
   }
@@ -162,9 +163,10 @@ evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, con
     std::fprintf (stderr, "%s: labelled inside %.4f of the hull volume, truly inside %.4f\n", name.c_str (), labelled_in / total,
                   truly_in / total);
   const double share = total > 0 ? agree / total : 0.0;
+  const double united = labelled_in + truly_in - both_in, iou = united > 0 ? both_in / united : 0.0;
   const auto& in = r.interior;
-  std::printf ("| %s | %.0f | %.2f%% | %.4f%% | %s | %s | %zu / %zu | %.1f | %.1f |\n", name.c_str (), count, 100 * noise,
-               100 * share, in.closed ? "yes" : "no", in.manifold ? "yes" : "no", in.nonmanifold_edges, in.nonmanifold_vertices,
+  std::printf ("| %s | %.0f | %.2f%% | %.4f%% | %.4f | %s | %s | %zu / %zu | %.1f | %.1f |\n", name.c_str (), count, 100 * noise,
+               100 * share, iou, in.closed ? "yes" : "no", in.manifold ? "yes" : "no", in.nonmanifold_edges, in.nonmanifold_vertices,
                r.timings.interior_ms, r.timings.total_ms);
   std::fflush (stdout);
   char cell[64];
@@ -172,6 +174,8 @@ evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, con
   pivot.cells.push_back (cell);
   summary.worst = std::min (summary.worst, share);
   summary.sum += share;
+  summary.iou_worst = std::min (summary.iou_worst, iou);
+  summary.iou_sum += iou;
   ++summary.runs;
   summary.closed += in.closed;
   summary.manifold += in.manifold;
@@ -200,14 +204,15 @@ printPivot (const std::vector<PivotRow>& pivot, const Options& o)
 void
 printSummary (const std::vector<Summary>& by_run, const Options& o)
 {
-  std::printf ("\n| points | noise | runs | mean agreement | worst agreement | closed | manifold |\n|---|---|---|---|---|---|---|\n");
+  std::printf ("\n| points | noise | runs | mean agreement | worst agreement | mean volume IoU | worst volume IoU | closed | manifold |\n"
+               "|---|---|---|---|---|---|---|---|---|\n");
   for (std::size_t ci = 0; ci < o.counts.size (); ++ci)
     for (std::size_t k = 0; k < o.noises.size (); ++k)
     {
       const Summary& s = by_run[ci * o.noises.size () + k];
       if (s.runs)
-        std::printf ("| %.0f | %.2f%% | %d | %.3f%% | %.3f%% | %d | %d |\n", o.counts[ci], 100 * o.noises[k], s.runs, 100 * s.sum / s.runs,
-                     100 * s.worst, s.closed, s.manifold);
+        std::printf ("| %.0f | %.2f%% | %d | %.3f%% | %.3f%% | %.4f | %.4f | %d | %d |\n", o.counts[ci], 100 * o.noises[k], s.runs,
+                     100 * s.sum / s.runs, 100 * s.worst, s.iou_sum / s.runs, s.iou_worst, s.closed, s.manifold);
     }
 }
 } // namespace
@@ -224,8 +229,8 @@ main (int argc, char** argv)
     std::fprintf (stderr, "flowseg_bench_interior: no .off/.obj meshes in %s\n", o.dir.c_str ());
     return 1;
   }
-  std::printf ("| mesh | points | noise | agreement | closed | manifold | non-manifold edges / vertices | interior ms | total ms |\n");
-  std::printf ("|---|---|---|---|---|---|---|---|---|\n");
+  std::printf ("| mesh | points | noise | agreement | volume IoU | closed | manifold | non-manifold edges / vertices | interior ms | total ms |\n");
+  std::printf ("|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<PivotRow> pivot;
   std::vector<Summary> by_run (o.counts.size () * o.noises.size ());
   for (const auto& path : meshes)

@@ -121,6 +121,34 @@ parseScanDirections (const std::string& value, std::vector<Eigen::Vector3d>& dir
 }
 
 bool
+parseRhoList (const std::string& list, std::vector<double>& rhos, std::string& error)
+{
+  rhos.clear ();
+  for (const auto& item : splitList (list))
+  {
+    char* end = nullptr;
+    const double rho = std::strtod (item.c_str (), &end);
+    if (*end || !std::isfinite (rho) || rho <= 0)
+      return error = "--rho: not a number > 0: " + item, false;
+    rhos.push_back (rho);
+  }
+  if (rhos.empty ())
+    return error = "--rho needs at least one value", false;
+  return true;
+}
+
+bool
+parseOutlierRemoval (const std::string& mode, pcl_flowseg::OutlierRemoval& removal, std::string& error)
+{
+  if (mode != "auto" && mode != "off" && mode != "on")
+    return error = "--outlier-removal needs auto, off or on", false;
+  removal = mode == "auto"  ? pcl_flowseg::OutlierRemoval::Automatic
+            : mode == "off" ? pcl_flowseg::OutlierRemoval::Off
+                            : pcl_flowseg::OutlierRemoval::Always;
+  return true;
+}
+
+bool
 parseOptions (int argc, char** argv, Options& o, std::string& error)
 {
   for (int i = 1; i < argc; ++i)
@@ -186,17 +214,13 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
     }
     else if (a == "--rho" && has_value)
     {
-      o.rhos.clear ();
-      for (const auto& item : splitList (argv[++i]))
-      {
-        char* end = nullptr;
-        const double rho = std::strtod (item.c_str (), &end);
-        if (*end || !std::isfinite (rho) || rho <= 0)
-          return error = "--rho: not a number > 0: " + item, false;
-        o.rhos.push_back (rho);
-      }
-      if (o.rhos.empty ())
-        return error = "--rho needs at least one value", false;
+      if (!parseRhoList (argv[++i], o.rhos, error))
+        return false;
+    }
+    else if (a == "--outlier-removal" && has_value)
+    {
+      if (!parseOutlierRemoval (argv[++i], o.flow.preparation.outliers, error))
+        return false;
     }
     else
       return error = "unknown or incomplete option " + a, false;
@@ -498,6 +522,16 @@ evaluateModel (const Model& model, const Options& o)
   }
 
   const std::vector<ModelView> views = modelViews (mesh, areas, o);
+  if (!o.scan_directions.empty () && !views.empty ()) // one segment on the faces each view sees
+  {
+    r.one_segment = Score{0.0, 0.0};
+    for (const ModelView& v : views)
+    {
+      const Score s = meanError (v.area_weights, std::vector<int> (r.faces, 0), humans, v.face_weights);
+      r.one_segment.area += s.area / static_cast<double> (views.size ());
+      r.one_segment.faces += s.faces / static_cast<double> (views.size ());
+    }
+  }
   for (double rho : o.rhos)
   {
     std::fprintf (stderr, "  model %s: flowseg rho %g\n", model.id.c_str (), rho);
@@ -792,7 +826,11 @@ printTimes (const std::vector<ModelResult>& results, const Options& o, std::chro
     transfer_seconds += r.transfer_seconds;
   }
   std::printf ("\nTime: flowseg %.1f s (%zu runs of %zu points), label transfer %.1f s, CGAL SDF %.1f s, whole run %.1f s\n",
-               flow_seconds, evaluated * o.rhos.size (), o.points, transfer_seconds, sdf_seconds, secondsSince (start));
+               flow_seconds, evaluated * o.rhos.size () * std::max<std::size_t> (1, o.scan_directions.size ()), o.points,
+               transfer_seconds, sdf_seconds, secondsSince (start));
+  if (!o.scan_directions.empty ())
+    std::printf ("Single views from %zu direction(s): flowseg and one segment scored on the faces each view sees, averaged over "
+                 "the views; human vs human on whole models.\n", o.scan_directions.size ());
 
 }
 
