@@ -134,7 +134,7 @@ expect "scan a mesh" 0 "a scan of" -- "$smp" "$work/tet.off" -n 300 --scan-from 
 expect "segment a scan from its sensor origin" 0 "noise: estimated sigma" -- "$seg" "$work/scan.pcd" --use-sensor-origin -o "$work/scan"
 expect "scan from inside the mesh" 1 "outside the mesh's bounding sphere" -- "$smp" "$work/tet.off" --scan-from 0.2,0.2,0.2 -o "$work/x.pcd"
 expect "scan viewpoint malformed" 2 "scan-from" -- "$smp" "$work/tet.off" --scan-from 1,2 -o "$work/x.pcd"
-expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off" -n 500 --outliers 0.02 -o "$work/out.pcd"
+expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off" -n 2000 --outliers 0.02 -o "$work/out.pcd"
 expect "outliers found and left out" 0 "left out as outliers" -- "$seg" "$work/out.pcd" -o "$work/out"
 grep -q '"outlier_points": [1-9]' "$work/out.json"; check "the JSON counts the outliers" $?
 expect "outliers kept on request" 0 " 0 outliers)" -- "$seg" "$work/out.pcd" --outliers off -o "$work/out"

@@ -109,6 +109,19 @@ TEST (OutlierRemoval, PlanarSampleCompactsItsPlaneCoordinates)
       ASSERT_LT (static_cast<std::size_t> (cell.vertices[i]), r.vertices.size ());
 }
 
+TEST (OutlierRemoval, AutomaticModeNeedsMoreThanOneOrTwoIsolatedPoints)
+{
+  const std::vector<Eigen::Vector3d> clean = shapeSample ("dumbbell2d", 600);
+  std::vector<Eigen::Vector3d> pts = clean;
+  const std::vector<Eigen::Vector3d> far = farPoints (clean, 2, true);
+  pts.insert (pts.end (), far.begin (), far.end ());
+  const FlowResult automatic = segmentWith (pts, OutlierRemoval::Automatic);
+  EXPECT_GT (automatic.noise.isolated_share, kIsolatedShare) << "seen";
+  EXPECT_EQ (automatic.outlier_points, 0u) << "but too few to act on";
+  const FlowResult forced = segmentWith (pts, OutlierRemoval::Always);
+  EXPECT_GE (forced.outlier_points, 2u);
+}
+
 TEST (OutlierRemoval, UnknownModeIsRefused)
 {
   FlowParameters params;

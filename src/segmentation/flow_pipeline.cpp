@@ -96,7 +96,8 @@ wantsOutlierRemoval (const PreparationParameters& params, const NoiseEstimate& n
     case OutlierRemoval::Off: return false;
     case OutlierRemoval::Automatic: break;
   }
-  return noise.isolated_share > kIsolatedShare;
+  const double isolated = noise.isolated_share * static_cast<double> (noise.points_used);
+  return noise.isolated_share > kIsolatedShare && isolated + 0.5 >= static_cast<double> (kIsolatedMinimum);
 }
 
 /** PCL's StatisticalOutlierRemoval on the vertices when wanted; counted and warned about. */

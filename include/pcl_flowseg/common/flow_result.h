@@ -118,7 +118,7 @@ struct NoiseEstimate
     * kNoiseEstimatePoints when there are more (their neighbours taken among all vertices, or an
     * evenly spaced 50,000 of them). */
   std::size_t points_used = 0;
-  /** Share of those vertices whose 16th nearest neighbour lies more than kIsolatedDistance times
+  /** Share of those vertices whose 4th nearest neighbour lies more than kIsolatedDistance times
     * the median such distance away: isolated points, outliers. */
   double isolated_share = 0.0;
 };
@@ -126,11 +126,14 @@ struct NoiseEstimate
 /** \brief Most vertices whose neighbourhoods the noise estimate measures: enough for a stable
   * median and an isolated share to 0.025%, few enough to cost little next to the triangulation. */
 constexpr std::size_t kNoiseEstimatePoints = 4000;
-/** \brief A vertex is isolated when its 16th nearest neighbour lies this many times the median
-  * distance away (a noisy surface sample stays within about twice the median). */
-constexpr double kIsolatedDistance = 5.0;
+/** \brief A vertex is isolated when its 4th nearest neighbour lies this many times the median
+  * distance away (surface samples, noisy or scanned at grazing angles, rarely do). */
+constexpr double kIsolatedDistance = 8.0;
 /** \brief Share of isolated vertices above which automatic outlier removal acts. */
 constexpr double kIsolatedShare = 0.001;
+/** \brief Fewest isolated vertices on which automatic outlier removal acts: in a small sample one
+  * or two are more likely a gap in the sampling than outliers. */
+constexpr std::size_t kIsolatedMinimum = 3;
 
 /** \brief What the interior/exterior separation found. */
 struct InteriorReport

@@ -97,9 +97,13 @@ nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points, std::size_t s
   for (std::size_t r = 0; r <= rows; ++r)
     h.first[r] = r * k;
   h.reach.resize (rows);
+  const std::size_t nth = std::min<std::size_t> (kIsolationNeighbour, k - 1); // the row holds the point itself
   for (std::size_t r = 0; r < rows; ++r) // squared L2 distances, unsorted
-    h.reach[r] = std::sqrt (*std::max_element (distances.begin () + static_cast<long> (r * k),
-                                               distances.begin () + static_cast<long> ((r + 1) * k)));
+  {
+    const auto row = distances.begin () + static_cast<long> (r * k);
+    std::nth_element (row, row + static_cast<long> (nth), row + static_cast<long> (k));
+    h.reach[r] = std::sqrt (row[static_cast<long> (nth)]);
+  }
   return h;
 }
 

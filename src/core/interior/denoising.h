@@ -21,6 +21,9 @@ constexpr double kNoiseVariation = 0.04;
 constexpr double kOffBoundaryShare = 0.08;
 /** Neighbours of the local PCA fits. */
 constexpr int kNoiseNeighbours = 16;
+/** The neighbour whose distance tells an isolated point (Neighbourhoods::reach): the 4th nearest
+  * other point, so that a few outliers close together are still seen. */
+constexpr int kIsolationNeighbour = 4;
 /** Upper bound on smoothing passes. */
 constexpr int kMaxSmoothingPasses = 4;
 
@@ -31,7 +34,7 @@ struct Neighbourhoods
 {
   std::vector<std::size_t> first;
   std::vector<int> ids;
-  std::vector<float> reach; ///< per point: the distance to its farthest neighbour in the row
+  std::vector<float> reach; ///< per row: the distance to the kIsolationNeighbour-th nearest other point
 };
 
 /** \brief The kNoiseNeighbours nearest points, among all \a points, of every \a stride-th point
