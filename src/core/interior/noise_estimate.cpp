@@ -40,7 +40,8 @@ estimateNoise (const std::vector<Eigen::Vector3d>& vertices, int dimension)
   std::vector<float> reach = hoods.reach;
   std::nth_element (reach.begin (), reach.begin () + static_cast<long> (reach.size () / 2), reach.end ());
   const double limit = kIsolatedDistance * reach[reach.size () / 2];
-  const auto isolated = std::count_if (hoods.reach.begin (), hoods.reach.end (), [&] (float r) { return r > limit; });
+  // A zero median (points closer than float precision) tells nothing: none counts as isolated.
+  const auto isolated = limit > 0.0 ? std::count_if (hoods.reach.begin (), hoods.reach.end (), [&] (float r) { return r > limit; }) : 0;
   estimate.isolated_share = static_cast<double> (isolated) / static_cast<double> (hoods.reach.size ());
   const double diagonal = (hi - lo).norm ();
   estimate.share = diagonal > 0.0 ? estimate.sigma / diagonal : 0.0;
