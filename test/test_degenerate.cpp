@@ -200,6 +200,19 @@ TEST (Degenerate, HugeAndTinyCoordinatesGiveTheSameSegmentation)
   expectConsistent (r);
 }
 
+/** Expects the default parameters changed by \a set to be refused with a message naming \a word. */
+template <typename Set>
+void
+expectRefused (const std::vector<Eigen::Vector3d>& pts, Set set, const std::string& word)
+{
+  FlowParameters params;
+  set (params);
+  FlowResult bad;
+  const Status s = runFlowSegmentation (pts, params, bad);
+  EXPECT_FALSE (s.ok);
+  EXPECT_NE (s.message.find (word), std::string::npos) << s.message;
+}
+
 TEST (Degenerate, AbsurdParametersAreRejected)
 {
   const auto pts = shapeSample ("hand2d", 200);
@@ -210,42 +223,16 @@ TEST (Degenerate, AbsurdParametersAreRejected)
     EXPECT_NE (s.message.find ("rho"), std::string::npos);
   }
   for (double tolerance : {-0.1, std::nan (""), std::numeric_limits<double>::infinity ()})
-  {
-    FlowParameters params;
-    params.merge.sampling_tolerance = tolerance;
-    FlowResult bad;
-    const Status s = runFlowSegmentation (pts, params, bad);
-    EXPECT_FALSE (s.ok);
-    EXPECT_NE (s.message.find ("tolerance"), std::string::npos) << s.message;
-  }
+    expectRefused (pts, [&] (FlowParameters& p) { p.merge.sampling_tolerance = tolerance; }, "tolerance");
   for (double ratio : {-1.0, 0.5, std::nan (""), std::numeric_limits<double>::infinity ()})
-  {
-    FlowParameters params;
-    params.merge.stump_ratio = ratio;
-    FlowResult bad;
-    const Status s = runFlowSegmentation (pts, params, bad);
-    EXPECT_FALSE (s.ok);
-    EXPECT_NE (s.message.find ("stump"), std::string::npos) << s.message;
-  }
+    expectRefused (pts, [&] (FlowParameters& p) { p.merge.stump_ratio = ratio; }, "stump");
   for (double value : {-1.0, std::nan (""), std::numeric_limits<double>::infinity ()})
-    for (bool size : {false, true})
-    {
-      FlowParameters params;
-      (size ? params.merge.compact_size : params.merge.compact_rho) = value;
-      FlowResult bad;
-      const Status s = runFlowSegmentation (pts, params, bad);
-      EXPECT_FALSE (s.ok);
-      EXPECT_NE (s.message.find (size ? "compact size" : "compact rho"), std::string::npos) << s.message;
-    }
-  for (double value : {-0.1, 1.0, 5.0, std::nan (""), std::numeric_limits<double>::infinity ()})
   {
-    FlowParameters params;
-    params.merge.min_part_share = value;
-    FlowResult bad;
-    const Status s = runFlowSegmentation (pts, params, bad);
-    EXPECT_FALSE (s.ok);
-    EXPECT_NE (s.message.find ("smallest part share"), std::string::npos) << s.message;
+    expectRefused (pts, [&] (FlowParameters& p) { p.merge.compact_size = value; }, "compact size");
+    expectRefused (pts, [&] (FlowParameters& p) { p.merge.compact_rho = value; }, "compact rho");
   }
+  for (double value : {-0.1, 1.0, 5.0, std::nan (""), std::numeric_limits<double>::infinity ()})
+    expectRefused (pts, [&] (FlowParameters& p) { p.merge.min_part_share = value; }, "smallest part share");
   FlowResult r = segmentOrDie (pts);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (-2.0), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, -1.0), r).ok);

@@ -39,6 +39,16 @@ farPoints (const std::vector<Eigen::Vector3d>& sample, std::size_t count, bool p
   return out;
 }
 
+/** \a clean followed by \a count far points (farPoints). */
+std::vector<Eigen::Vector3d>
+withFarPoints (const std::vector<Eigen::Vector3d>& clean, std::size_t count, bool planar)
+{
+  std::vector<Eigen::Vector3d> pts = clean;
+  const std::vector<Eigen::Vector3d> far = farPoints (clean, count, planar);
+  pts.insert (pts.end (), far.begin (), far.end ());
+  return pts;
+}
+
 FlowResult
 segmentWith (const std::vector<Eigen::Vector3d>& pts, OutlierRemoval mode)
 {
@@ -73,10 +83,8 @@ TEST (OutlierRemoval, CleanSampleIsLeftAlone)
 TEST (OutlierRemoval, AutomaticModeRemovesIsolatedPointsAndKeepsTheParts)
 {
   const std::vector<Eigen::Vector3d> clean = shapeSample ("snowman3d", 3000);
-  std::vector<Eigen::Vector3d> pts = clean;
-  const std::vector<Eigen::Vector3d> far = farPoints (clean, 30, false);
-  pts.insert (pts.end (), far.begin (), far.end ());
-  pts.push_back (far.front ()); // a duplicate of an outlier: left out with it
+  std::vector<Eigen::Vector3d> pts = withFarPoints (clean, 30, false);
+  pts.push_back (pts[clean.size ()]); // a duplicate of an outlier: left out with it
 
   const FlowResult kept = segmentWith (pts, OutlierRemoval::Off);
   EXPECT_GT (kept.noise.isolated_share, kIsolatedShare);
@@ -97,9 +105,7 @@ TEST (OutlierRemoval, AutomaticModeRemovesIsolatedPointsAndKeepsTheParts)
 TEST (OutlierRemoval, PlanarSampleCompactsItsPlaneCoordinates)
 {
   const std::vector<Eigen::Vector3d> clean = shapeSample ("dumbbell2d", 1500);
-  std::vector<Eigen::Vector3d> pts = clean;
-  const std::vector<Eigen::Vector3d> far = farPoints (clean, 15, true);
-  pts.insert (pts.end (), far.begin (), far.end ());
+  const std::vector<Eigen::Vector3d> pts = withFarPoints (clean, 15, true);
   const FlowResult r = segmentWith (pts, OutlierRemoval::Always);
   EXPECT_EQ (r.dimension, 2);
   EXPECT_GE (unlabelledFrom (r, clean.size ()), 13u);
@@ -112,9 +118,7 @@ TEST (OutlierRemoval, PlanarSampleCompactsItsPlaneCoordinates)
 TEST (OutlierRemoval, AutomaticModeNeedsMoreThanOneOrTwoIsolatedPoints)
 {
   const std::vector<Eigen::Vector3d> clean = shapeSample ("dumbbell2d", 600);
-  std::vector<Eigen::Vector3d> pts = clean;
-  const std::vector<Eigen::Vector3d> far = farPoints (clean, 2, true);
-  pts.insert (pts.end (), far.begin (), far.end ());
+  const std::vector<Eigen::Vector3d> pts = withFarPoints (clean, 2, true);
   const FlowResult automatic = segmentWith (pts, OutlierRemoval::Automatic);
   EXPECT_GT (automatic.noise.isolated_share, kIsolatedShare) << "seen";
   EXPECT_EQ (automatic.outlier_points, 0u) << "but too few to act on";
