@@ -10,8 +10,6 @@
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/evaluation/mesh_inside_test.h>
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <chrono>
@@ -22,42 +20,6 @@
 #include <vector>
 
 namespace {
-/** Prototype: project every point onto the PCA plane of its k nearest neighbours. */
-std::vector<Eigen::Vector3d>
-smooth (const std::vector<Eigen::Vector3d>& pts, int k, int iterations)
-{
-  std::vector<Eigen::Vector3d> cur = pts;
-  for (int it = 0; it < iterations; ++it)
-  {
-    pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
-    for (const auto& p : cur)
-      cloud->push_back (pcl::PointXYZ (p.x (), p.y (), p.z ()));
-    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-    tree.setInputCloud (cloud);
-    std::vector<Eigen::Vector3d> next (cur.size ());
-    std::vector<double> variation;
-    pcl::Indices idx;
-    std::vector<float> d2;
-    for (std::size_t i = 0; i < cur.size (); ++i)
-    {
-      tree.nearestKSearch ((*cloud)[i], k, idx, d2);
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
-      for (auto j : idx) mean += cur[j];
-      mean /= idx.size ();
-      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
-      for (auto j : idx) cov += (cur[j] - mean) * (cur[j] - mean).transpose ();
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es (cov);
-      const Eigen::Vector3d n = es.eigenvectors ().col (0);
-      variation.push_back (es.eigenvalues ()[0] / es.eigenvalues ().sum ());
-      next[i] = cur[i] - (cur[i] - mean).dot (n) * n;
-    }
-    cur = next;
-    std::sort (variation.begin (), variation.end ());
-    std::fprintf (stderr, "iteration %d: median variation %.5f, 90%% %.5f\n", it, variation[variation.size () / 2], variation[variation.size () * 9 / 10]);
-  }
-  return cur;
-}
-
 std::vector<std::string>
 meshesIn (const std::string& dir)
 {
@@ -95,7 +57,7 @@ struct Options
   std::string only;
   bool verbose = false;
   pcl_flowseg::Denoising denoising = pcl_flowseg::Denoising::Automatic;
-  int smooth_k = 0, smooth_iter = 1;
+  unsigned smoothing_passes = 0; // the library's PreparationParameters::smoothing_passes
 };
 
 bool
@@ -114,11 +76,12 @@ parseOptions (int argc, char** argv, Options& o)
       const std::string m = argv[++i];
       o.denoising = m == "off" ? pcl_flowseg::Denoising::Off : m == "on" ? pcl_flowseg::Denoising::Always : pcl_flowseg::Denoising::Automatic;
     }
-    else if (a == "--smooth" && i + 2 < argc) { o.smooth_k = std::atoi (argv[++i]); o.smooth_iter = std::atoi (argv[++i]); }
+    else if (a == "--smooth" && i + 1 < argc) o.smoothing_passes = static_cast<unsigned> (std::atoi (argv[++i]));
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_interior [--meshes DIR] [--points 5000,50000] [--noise 0,0.0025,0.005] [--only NAME]\n"
-                            "                              [--denoise auto|off|on] [--verbose]\n"
+                            "                              [--denoise auto|off|on] [--smooth N (0)] [--verbose]\n"
+                            "  --smooth N: smoothing passes before the triangulation (PreparationParameters::smoothing_passes)\n"
                             "  noise: standard deviation as a fraction of the bounding-box diagonal\n");
       return false;
     }
@@ -136,11 +99,10 @@ evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, con
              double count, double noise, bool first_noise, const Options& o, PivotRow& pivot, Summary& summary)
 {
   auto pts = pcl_flowseg::sampleMeshSurface (mesh, static_cast<std::size_t> (count), noise * mesh.diagonal (), 1);
-  if (o.smooth_k > 0)
-    pts = smooth (pts, o.smooth_k, o.smooth_iter);
   pcl_flowseg::FlowParameters params;
   params.preparation.dimension = pcl_flowseg::DimensionMode::Spatial;
   params.interior.denoising = o.denoising;
+  params.preparation.smoothing_passes = o.smoothing_passes;
   pcl_flowseg::FlowResult r;
   const auto status = pcl_flowseg::runFlowSegmentation (pts, params, r);
   if (!status)

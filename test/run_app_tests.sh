@@ -138,6 +138,9 @@ expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off"
 expect "outliers found and left out" 0 "left out as outliers" -- "$seg" "$work/out.pcd" -o "$work/out"
 grep -q '"outlier_points": [1-9]' "$work/out.json"; check "the JSON counts the outliers" $?
 expect "outliers kept on request" 0 " 0 outliers)" -- "$seg" "$work/out.pcd" --outliers off -o "$work/out"
+expect "smoothing before the triangulation" 0 "segments after merging" -- "$seg" "$work/out.pcd" --smooth 2 -o "$work/smooth"
+grep -q '"smoothing_passes": 2' "$work/smooth.json"; check "the JSON records the smoothing passes" $?
+expect "smoothing passes absurd" 2 "smooth" -- "$seg" "$src/samples/hand2d.pcd" --smooth 99
 expect "outlier mode absurd" 2 "outliers" -- "$seg" "$src/samples/hand2d.pcd" --outliers sometimes
 expect "sampler bad outliers" 2 "outliers" -- "$smp" "$work/tet.off" --outliers 2 -o "$work/x.pcd"
 expect "smallest part share absurd" 2 "min-part-share" -- "$seg" "$src/samples/hand2d.pcd" --min-part-share 1

@@ -54,10 +54,7 @@ segmentWith (const std::vector<Eigen::Vector3d>& pts, OutlierRemoval mode)
 {
   FlowParameters params;
   params.preparation.outliers = mode;
-  FlowResult r;
-  const Status s = runFlowSegmentation (pts, params, r);
-  EXPECT_TRUE (s.ok) << s.message;
-  return r;
+  return flowseg_test::segmentWithParameters (pts, params);
 }
 
 /** Input points from \a first on labelled no segment. */

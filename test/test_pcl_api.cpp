@@ -245,6 +245,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   seg.setDimension (2);
   seg.setPlanarTolerance (1e-6);
   seg.setOutlierRemoval (pcl_flowseg::OutlierRemoval::Always);
+  seg.setSmoothingPasses (1);
   seg.setSeparateInterior (true);
   seg.setDenoising (pcl_flowseg::Denoising::Off);
   seg.setFeatureSide (pcl_flowseg::FeatureSide::Both);
@@ -260,6 +261,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   EXPECT_EQ (p.preparation.dimension, pcl_flowseg::DimensionMode::Planar);
   EXPECT_EQ (p.preparation.planar_tolerance, 1e-6);
   EXPECT_EQ (p.preparation.outliers, pcl_flowseg::OutlierRemoval::Always);
+  EXPECT_EQ (p.preparation.smoothing_passes, 1u);
   EXPECT_EQ (p.interior.denoising, pcl_flowseg::Denoising::Off);
   EXPECT_EQ (p.features, pcl_flowseg::FeatureSide::Both);
   EXPECT_EQ (p.execution.threads, 1u);
@@ -270,6 +272,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   EXPECT_EQ (other.getRho (), 1.3);
   EXPECT_EQ (other.getDimension (), 2);
   EXPECT_EQ (other.getOutlierRemoval (), pcl_flowseg::OutlierRemoval::Always);
+  EXPECT_EQ (other.getSmoothingPasses (), 1u);
   EXPECT_EQ (other.getFeatureSide (), pcl_flowseg::FeatureSide::Both);
   EXPECT_EQ (other.getMemoryLimit (), std::size_t (1) << 33);
 

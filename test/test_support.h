@@ -81,6 +81,19 @@ segmentOrDie (const std::vector<Eigen::Vector3d>& pts, double rho = kDefaultMerg
   return result;
 }
 
+/** Runs the pipeline with \a params and fails the calling test when it does not succeed. */
+inline pcl_flowseg::FlowResult
+segmentWithParameters (const std::vector<Eigen::Vector3d>& pts, const pcl_flowseg::FlowParameters& params)
+{
+  pcl_flowseg::FlowResult result;
+  const auto status = pcl_flowseg::runFlowSegmentation (pts, params, result);
+  if (!status.ok)
+  {
+    ADD_FAILURE () << "segmentation failed: " << status.message;
+  }
+  return result;
+}
+
 /** True when the two label vectors describe the same partition (labels may be renamed). */
 inline bool
 samePartition (const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b, std::string* why = nullptr)

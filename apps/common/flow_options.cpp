@@ -59,6 +59,8 @@ addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
             std::vector<std::pair<std::string, pcl_flowseg::OutlierRemoval>>{{"auto", pcl_flowseg::OutlierRemoval::Automatic},
                                                                               {"off", pcl_flowseg::OutlierRemoval::Off},
                                                                               {"on", pcl_flowseg::OutlierRemoval::Always}});
+  p.count ("--smooth", "N", "smoothing passes before the triangulation, for samples known to be\nnoisy (2 for a depth camera); thin walls collapse. 3D only", params.preparation.smoothing_passes,
+           0u, pcl_flowseg::kMaxSmoothingPasses);
   pcl_flowseg::InteriorParameters* in = &params.interior;
   p.action ("--no-interior", "skip interior/exterior separation: the paper's raw segmentation of\nthe whole convex hull, every segment reported",
             [in] () { in->separate = false; });

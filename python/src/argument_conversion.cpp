@@ -157,6 +157,12 @@ addFlowKeywords (std::map<std::string, Keyword>& k)
                      c.flow.preparation.outliers = static_cast<pcl_flowseg::OutlierRemoval> (i);
                      return r;
                    }};
+  k["smoothing_passes"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
+                             std::int64_t passes = 0;
+                             const Conversion r = toCount (n, v, 0, pcl_flowseg::kMaxSmoothingPasses, passes);
+                             c.flow.preparation.smoothing_passes = static_cast<unsigned> (passes);
+                             return r;
+                           }};
   k["rho"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::rho)};
   k["sampling_tolerance"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::sampling_tolerance)};
   k["stump_ratio"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::stump_ratio)};
@@ -284,6 +290,7 @@ flowArguments (const pcl_flowseg::FlowParameters& p)
   a.emplace_back ("dimension", kDimensionNames[dimension]);
   a.emplace_back ("planar_tolerance", p.preparation.planar_tolerance);
   a.emplace_back ("outliers", kOutlierNames[static_cast<std::size_t> (p.preparation.outliers) % 3]);
+  a.emplace_back ("smoothing_passes", static_cast<std::int64_t> (p.preparation.smoothing_passes));
   a.emplace_back ("rho", p.merge.rho);
   a.emplace_back ("sampling_tolerance", p.merge.sampling_tolerance);
   a.emplace_back ("stump_ratio", p.merge.stump_ratio);

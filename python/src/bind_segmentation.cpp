@@ -315,7 +315,7 @@ points: (n, 2) or (n, 3) float32/float64 array (2 columns: a 2D shape). NaN/Inf 
     and counted (label -1); duplicates take the label of their first copy.
 normals: None or (n, 3) array of outward normals (evidence for the interior/exterior separation).
 progress: None or a callable(stage: str, fraction: float), called during the run.
-Keywords (see defaults()): dimension, planar_tolerance, outliers, rho, sampling_tolerance, stump_ratio,
+Keywords (see defaults()): dimension, planar_tolerance, outliers, smoothing_passes, rho, sampling_tolerance, stump_ratio,
     compact_rho, compact_size, min_part_share, separate, denoising, viewpoint, features, threads, memory_limit,
     significance.
 Raises ValueError for input that cannot be segmented or a parameter out of range, TypeError for

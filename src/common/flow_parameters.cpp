@@ -46,6 +46,9 @@ checkParameters (const FlowParameters& p)
   const OutlierRemoval o = p.preparation.outliers;
   if (o != OutlierRemoval::Automatic && o != OutlierRemoval::Off && o != OutlierRemoval::Always)
     return Status::error ("outlier removal must be automatic, off or always");
+  if (p.preparation.smoothing_passes > kMaxSmoothingPasses)
+    return Status::error ("smoothing passes must be at most " + std::to_string (kMaxSmoothingPasses) + ", got " +
+                          std::to_string (p.preparation.smoothing_passes));
   if (const Status merge = checkMergeParameters (p.merge); !merge)
     return merge;
   const Denoising n = p.interior.denoising;

@@ -46,7 +46,8 @@ parametersJson (const FlowParameters& p)
   s += d == DimensionMode::Automatic ? "\"auto\"" : d == DimensionMode::Planar ? "2" : "3";
   s += ", \"planar_tolerance\": " + num (p.preparation.planar_tolerance) + ", \"outliers\": ";
   const OutlierRemoval o = p.preparation.outliers;
-  s += o == OutlierRemoval::Automatic ? "\"auto\"}" : o == OutlierRemoval::Off ? "\"off\"}" : "\"always\"}";
+  s += o == OutlierRemoval::Automatic ? "\"auto\"" : o == OutlierRemoval::Off ? "\"off\"" : "\"always\"";
+  s += ", \"smoothing_passes\": " + std::to_string (p.preparation.smoothing_passes) + "}";
   s += ", \"merge\": {\"rho\": " + num (p.merge.rho) + ", \"sampling_tolerance\": " + num (p.merge.sampling_tolerance) +
        ", \"stump_ratio\": " + num (p.merge.stump_ratio) + ", \"compact_rho\": " + num (p.merge.compact_rho) +
        ", \"compact_size\": " + num (p.merge.compact_size) + ", \"min_part_share\": " + num (p.merge.min_part_share) + "}";

@@ -8,6 +8,7 @@
 #include "core/delaunay/delaunay_cells.h"
 #include "core/flow/manifold_summary.h"
 #include "core/flow/stable_manifolds.h"
+#include "core/interior/denoising.h"
 #include "core/interior/facet_agreement.h"
 #include "core/interior/interior_labelling.h"
 #include "core/interior/noise_estimate.h"
@@ -115,7 +116,26 @@ outlierStage (const Run& run, core::PreparedPoints& prepared)
   result.timings.preparation_ms += millisecondsSince (start);
 }
 
-/** Finite filter, duplicates, dimension, noise, outliers: the vertices of the triangulation. */
+/** The requested smoothing passes on a 3D sample's vertices (PreparationParameters::smoothing_passes). */
+void
+smoothingStage (const Run& run, core::PreparedPoints& prepared)
+{
+  const unsigned passes = run.params.preparation.smoothing_passes;
+  if (passes == 0)
+    return;
+  FlowResult& result = run.result;
+  if (prepared.dimension != 3)
+  {
+    result.warnings.push_back ("smoothing passes apply to 3D samples only: this 2D sample was not smoothed");
+    return;
+  }
+  const auto start = Clock::now ();
+  for (unsigned pass = 0; pass < passes; ++pass)
+    prepared.vertices = core::smoothPoints (prepared.vertices, core::nearestNeighbourhoods (prepared.vertices), 3);
+  result.timings.preparation_ms += millisecondsSince (start);
+}
+
+/** Finite filter, duplicates, dimension, noise, outliers, smoothing: the vertices of the triangulation. */
 Status
 prepareStage (const Run& run, core::PreparedPoints& prepared)
 {
@@ -127,6 +147,7 @@ prepareStage (const Run& run, core::PreparedPoints& prepared)
   run.report ("noise", 0.03);
   noiseStage (prepared, result);
   outlierStage (run, prepared);
+  smoothingStage (run, prepared);
   result.dimension = prepared.dimension;
   result.non_finite_points = prepared.non_finite;
   result.duplicate_points = prepared.duplicates;

@@ -57,7 +57,16 @@ struct PreparationParameters
     * out (labelled kNoSegment, counted in FlowResult::outlier_points). Automatic: only when the
     * sample shows isolated points. */
   OutlierRemoval outliers = OutlierRemoval::Automatic;
+  /** Smoothing before the triangulation: passes projecting every vertex of a 3D sample onto the
+    * PCA plane of its 16 nearest neighbours (FlowResult::vertices are then the smoothed
+    * positions). 0 = off. For samples known to be noisy (a depth camera: 2); walls and parts
+    * thinner than a neighbourhood collapse, so it is not chosen automatically. At most
+    * kMaxSmoothingPasses; 2D samples are not smoothed (a warning says so). */
+  unsigned smoothing_passes = 0;
 };
+
+/** \brief Most smoothing passes before the triangulation. */
+constexpr unsigned kMaxSmoothingPasses = 8;
 
 /** \brief How stable manifolds merge into segments. All values are dimensionless; with
   * sampling_tolerance, stump_ratio, compact_size and min_part_share 0 the result is the paper's

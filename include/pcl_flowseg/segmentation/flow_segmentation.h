@@ -86,6 +86,9 @@ public:
   /** \brief pcl_flowseg::PreparationParameters::outliers. */
   inline void setOutlierRemoval (pcl_flowseg::OutlierRemoval mode) { params_.preparation.outliers = mode; }
   inline pcl_flowseg::OutlierRemoval getOutlierRemoval () const { return params_.preparation.outliers; }
+  /** \brief pcl_flowseg::PreparationParameters::smoothing_passes. */
+  inline void setSmoothingPasses (unsigned passes) { params_.preparation.smoothing_passes = passes; }
+  inline unsigned getSmoothingPasses () const { return params_.preparation.smoothing_passes; }
 
   /** \brief pcl_flowseg::InteriorParameters::separate. */
   inline void setSeparateInterior (bool separate) { params_.interior.separate = separate; }
