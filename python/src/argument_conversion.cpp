@@ -131,9 +131,22 @@ flowNumber (Group pcl_flowseg::FlowParameters::*group, double Group::*field)
 }
 
 const std::vector<std::string> kDimensionNames = {"automatic", "", "planar", "spatial"};
-const std::vector<std::string> kDenoisingNames = {"automatic", "off", "always"};
-const std::vector<std::string> kOutlierNames = {"automatic", "off", "always"};
+/** The names of the Automatic / Off / Always modes (Denoising, OutlierRemoval), in enum order. */
+const std::vector<std::string> kModeNames = {"automatic", "off", "always"};
 const std::vector<std::string> kFeatureNames = {"interior", "exterior", "both"};
+
+/** A keyword naming one of \a names, stored in \a field of \a group as the enum of that index. */
+template <typename Group, typename Enum>
+Setter
+flowChoice (Group pcl_flowseg::FlowParameters::*group, Enum Group::*field, const std::vector<std::string>& names)
+{
+  return [group, field, &names] (const std::string& n, const ArgumentValue& v, CallParameters& c, pcl_flowseg::MatchParameters&) {
+    std::size_t i = 0;
+    const Conversion r = toChoice (n, v, names, i);
+    (c.flow.*group).*field = static_cast<Enum> (i);
+    return r;
+  };
+}
 
 /** The flow keywords: every FlowParameters field under its own name. */
 void
@@ -151,12 +164,7 @@ addFlowKeywords (std::map<std::string, Keyword>& k)
                       return r;
                     }};
   k["planar_tolerance"] = {kFlowArguments, flowNumber (&FP::preparation, &pcl_flowseg::PreparationParameters::planar_tolerance)};
-  k["outliers"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                     std::size_t i = 0;
-                     const Conversion r = toChoice (n, v, kOutlierNames, i);
-                     c.flow.preparation.outliers = static_cast<pcl_flowseg::OutlierRemoval> (i);
-                     return r;
-                   }};
+  k["outliers"] = {kFlowArguments, flowChoice (&FP::preparation, &pcl_flowseg::PreparationParameters::outliers, kModeNames)};
   k["smoothing_passes"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
                              std::int64_t passes = 0;
                              const Conversion r = toCount (n, v, 0, pcl_flowseg::kMaxSmoothingPasses, passes);
@@ -172,12 +180,7 @@ addFlowKeywords (std::map<std::string, Keyword>& k)
   k["separate"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
                      return toFlag (n, v, c.flow.interior.separate);
                    }};
-  k["denoising"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                      std::size_t i = 0;
-                      const Conversion r = toChoice (n, v, kDenoisingNames, i);
-                      c.flow.interior.denoising = static_cast<pcl_flowseg::Denoising> (i);
-                      return r;
-                    }};
+  k["denoising"] = {kFlowArguments, flowChoice (&FP::interior, &pcl_flowseg::InteriorParameters::denoising, kModeNames)};
   k["viewpoint"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
                       return toViewpoint (n, v, c.flow.interior.viewpoint);
                     }};
@@ -289,7 +292,7 @@ flowArguments (const pcl_flowseg::FlowParameters& p)
                                                                                                  : 3;
   a.emplace_back ("dimension", kDimensionNames[dimension]);
   a.emplace_back ("planar_tolerance", p.preparation.planar_tolerance);
-  a.emplace_back ("outliers", kOutlierNames[static_cast<std::size_t> (p.preparation.outliers) % 3]);
+  a.emplace_back ("outliers", kModeNames[static_cast<std::size_t> (p.preparation.outliers) % 3]);
   a.emplace_back ("smoothing_passes", static_cast<std::int64_t> (p.preparation.smoothing_passes));
   a.emplace_back ("rho", p.merge.rho);
   a.emplace_back ("sampling_tolerance", p.merge.sampling_tolerance);
@@ -298,7 +301,7 @@ flowArguments (const pcl_flowseg::FlowParameters& p)
   a.emplace_back ("compact_size", p.merge.compact_size);
   a.emplace_back ("min_part_share", p.merge.min_part_share);
   a.emplace_back ("separate", p.interior.separate);
-  a.emplace_back ("denoising", kDenoisingNames[static_cast<std::size_t> (p.interior.denoising) % 3]);
+  a.emplace_back ("denoising", kModeNames[static_cast<std::size_t> (p.interior.denoising) % 3]);
   if (p.interior.viewpoint)
     a.emplace_back ("viewpoint", std::vector<double>{p.interior.viewpoint->x (), p.interior.viewpoint->y (), p.interior.viewpoint->z ()});
   else
