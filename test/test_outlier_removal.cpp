@@ -52,9 +52,7 @@ withFarPoints (const std::vector<Eigen::Vector3d>& clean, std::size_t count, boo
 FlowResult
 segmentWith (const std::vector<Eigen::Vector3d>& pts, OutlierRemoval mode)
 {
-  FlowParameters params;
-  params.preparation.outliers = mode;
-  return flowseg_test::segmentWithParameters (pts, params);
+  return flowseg_test::segmentWith (pts, [mode] (FlowParameters& p) { p.preparation.outliers = mode; });
 }
 
 /** Input points from \a first on labelled no segment. */

@@ -36,9 +36,7 @@ withNoise (std::vector<Eigen::Vector3d> pts, double share)
 FlowResult
 segmentWithPasses (const std::vector<Eigen::Vector3d>& pts, unsigned passes)
 {
-  FlowParameters params;
-  params.preparation.smoothing_passes = passes;
-  return flowseg_test::segmentWithParameters (pts, params);
+  return flowseg_test::segmentWith (pts, [passes] (FlowParameters& p) { p.preparation.smoothing_passes = passes; });
 }
 
 } // namespace

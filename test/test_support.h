@@ -94,6 +94,17 @@ segmentWithParameters (const std::vector<Eigen::Vector3d>& pts, const pcl_flowse
   return result;
 }
 
+/** Runs the pipeline with the default parameters changed by \a set (a callable on FlowParameters&)
+  * and fails the calling test when it does not succeed. */
+template <typename Set>
+pcl_flowseg::FlowResult
+segmentWith (const std::vector<Eigen::Vector3d>& pts, Set set)
+{
+  pcl_flowseg::FlowParameters params;
+  set (params);
+  return segmentWithParameters (pts, params);
+}
+
 /** True when the two label vectors describe the same partition (labels may be renamed). */
 inline bool
 samePartition (const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b, std::string* why = nullptr)
