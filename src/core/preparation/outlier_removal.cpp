@@ -21,8 +21,12 @@ keptVertices (const std::vector<Eigen::Vector3d>& vertices)
 {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
   cloud->reserve (vertices.size ());
+  const Eigen::Vector3d origin = vertices.front (); // relative coordinates keep float precision far from 0
   for (const Eigen::Vector3d& v : vertices)
-    cloud->push_back (pcl::PointXYZ (static_cast<float> (v.x ()), static_cast<float> (v.y ()), static_cast<float> (v.z ())));
+  {
+    const Eigen::Vector3d r = v - origin;
+    cloud->push_back (pcl::PointXYZ (static_cast<float> (r.x ()), static_cast<float> (r.y ()), static_cast<float> (r.z ())));
+  }
   pcl::StatisticalOutlierRemoval<pcl::PointXYZ> filter;
   filter.setInputCloud (cloud);
   filter.setMeanK (kOutlierNeighbours);
