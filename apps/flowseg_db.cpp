@@ -45,11 +45,12 @@ makeParser (Options& o)
                   "Shape files: .pcd .ply .xyz .txt .csv (points), .off .obj .ply meshes (sampled on their faces)\n"
                   "and .png .bmp .pgm silhouettes (their boundary, 2D).");
   p.count ("-k", "N", "query: how many results; 0 = all", o.k, 0, 1000000000);
-  p.count ("--candidates", "N", "query: align the N stored shapes whose signature summaries are\nnearest; 0 = every stored shape; the rest are listed after them\nby summary distance, similarity \"-\"",
+  p.count ("--candidates", "N", "query: compare in full the N stored shapes whose summaries are\nnearest; 0 = every stored shape; the rest are listed after them\nby summary distance, similarity \"-\"",
            o.candidates, 0, 1000000000);
   p.text ("--label", "L", "add: class of the added shapes (default: their folder name)", o.label);
   flowseg_app::addMergeOptions (p, o.params.merge);
   flowseg_app::addSignatureOptions (p, o.signature);
+  flowseg_app::addMatchMethodOption (p, o.match);
   flowseg_app::addMatchOptions (p, o.match);
   flowseg_app::addThreadsOption (p, o.threads);
   p.flag ("-q, --quiet", "no progress", o.quiet);
@@ -196,7 +197,8 @@ query (const OptionParser& p, const std::vector<std::string>& args, const Option
   const auto t0 = std::chrono::steady_clock::now ();
   const auto hits = db.query (s, o.k, matcher);
   const double ms = std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
-  std::printf ("rank\tsimilarity\tscore\tclass\tshape\n");
+  const bool paper = o.match.method == pcl_flowseg::MatchMethod::Paper;
+  std::printf ("rank\tsimilarity\t%s\tclass\tshape\n", paper ? "score" : "distance");
   for (std::size_t r = 0; r < hits.size (); ++r)
   {
     const auto& e = db.entries ()[hits[r].entry];
@@ -206,7 +208,8 @@ query (const OptionParser& p, const std::vector<std::string>& args, const Option
       std::printf ("%zu\t-\t-\t%s\t%s\n", r + 1, e.label.c_str (), e.name.c_str ());
   }
   if (!o.quiet)
-    std::fprintf (stderr, "query against %zu stored signatures (%s aligned): %.2f ms\n", db.size (),
+    std::fprintf (stderr, "query (method %s) against %zu stored signatures (%s compared in full): %.2f ms\n",
+                  pcl_flowseg::matchMethodName (o.match.method), db.size (),
                   o.candidates ? std::to_string (std::min (o.candidates, db.size ())).c_str () : "all", ms);
   return flowseg_app::kExitSuccess;
 }
@@ -217,7 +220,8 @@ list (const OptionParser& p, const std::vector<std::string>& args, pcl_flowseg::
   if (args.size () != 2)
     return p.usageError ("list needs DB only");
   for (const auto& e : db.entries ())
-    std::printf ("%s\t%s\t%zu features\n", e.label.c_str (), e.name.c_str (), e.signature.points.size ());
+    std::printf ("%s\t%s\t%zu features\t%zu parts\n", e.label.c_str (), e.name.c_str (), e.signature.points.size (),
+                 e.signature.description.parts.size ());
   return flowseg_app::kExitSuccess;
 }
 

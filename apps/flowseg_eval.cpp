@@ -26,6 +26,7 @@
 #include <mutex>
 #include <string>
 #include <sys/stat.h>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -42,13 +43,14 @@ msSince (Clock::time_point t)
 struct Options
 {
   std::string output;
-  std::string methods = "flowseg,d2,esf";
+  std::string methods = "flowseg,paper,parts,thickness,inner,solid,d2,esf";
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
   pcl_flowseg::MatchParameters match;
   unsigned threads = 0;
   bool quiet = false;
-  bool flowseg = false, d2 = false, esf = false; ///< from methods
+  std::vector<pcl_flowseg::MatchMethod> signature_methods; ///< from methods, in their order
+  bool flowseg = false, d2 = false, esf = false;           ///< signatures, d2, esf needed
 };
 
 OptionParser
@@ -61,10 +63,12 @@ makeParser (Options& o)
                   "matches of shape i, black = best), OUTDIR/top5_METHOD.png (the first shape of up to eight\n"
                   "classes and its five best matches; green frame: same class, red: another), and\n"
                   "OUTDIR/scores.json (nearest neighbour, first and second tier, DCG, bull's eye for 2D sets, time).\n\n"
-                  "Methods: flowseg (this module's signatures and matcher), d2 (Osada's D2 shape distribution on the\n"
-                  "same points), esf (PCL's Ensemble of Shape Functions).");
+                  "Methods: flowseg (this module's default: parts, thickness and inner or solid distances combined),\n"
+                  "paper (the paper's weighted points and alignment), its components parts, thickness, inner, solid\n"
+                  "(see flowseg_match --method), d2 (Osada's D2 shape distribution on the same points), esf (PCL's\n"
+                  "Ensemble of Shape Functions).");
   p.text ("-o, --output", "DIR", "output folder (created), required", o.output);
-  p.text ("--methods", "LIST", "comma-separated", o.methods);
+  p.text ("--methods", "LIST", "comma-separated, any of the methods above", o.methods);
   flowseg_app::addMergeOptions (p, o.params.merge);
   flowseg_app::addSignatureOptions (p, o.signature);
   flowseg_app::addMatchOptions (p, o.match);
@@ -72,6 +76,32 @@ makeParser (Options& o)
   p.flag ("-q, --quiet", "no progress", o.quiet);
   p.epilogue ("Exit status: 0 success, 1 unreadable input or output, 2 bad options.");
   return p;
+}
+
+/** Splits --methods into signature methods, d2 and esf; refuses unknown, repeated or no names. */
+pcl_flowseg::Status
+parseMethods (Options& o)
+{
+  std::vector<std::string> seen;
+  std::size_t start = 0;
+  while (start <= o.methods.size ())
+  {
+    const std::size_t end = std::min (o.methods.find (',', start), o.methods.size ());
+    const std::string name = o.methods.substr (start, end - start);
+    start = end + 1;
+    if (std::find (seen.begin (), seen.end (), name) != seen.end ())
+      return pcl_flowseg::Status::error ("--methods names " + name + " twice");
+    seen.push_back (name);
+    pcl_flowseg::MatchMethod method;
+    if (name == "d2" || name == "esf")
+      (name == "d2" ? o.d2 : o.esf) = true;
+    else if (pcl_flowseg::parseMatchMethod (name, method))
+      o.signature_methods.push_back (method);
+    else
+      return pcl_flowseg::Status::error ("--methods: '" + name + "' is none of flowseg, paper, parts, thickness, inner, solid, d2, esf");
+  }
+  o.flowseg = !o.signature_methods.empty ();
+  return pcl_flowseg::Status::success ();
 }
 
 /** What each method knows of each shape. */
@@ -178,22 +208,25 @@ int
 evaluate (const OptionParser& p, const std::string& root, const Options& o, const Collection& c)
 {
   const bool planar = o.flowseg && std::all_of (c.dimensions.begin (), c.dimensions.end (), [] (int d) { return d == 2; });
-  pcl::SignatureMatcher matcher;
-  matcher.setParameters (o.match);
-  std::vector<std::pair<std::string, std::function<double (std::size_t, std::size_t)>>> methods;
-  if (o.flowseg)
-    methods.emplace_back ("flowseg", [&] (std::size_t i, std::size_t j) { return matcher.match (c.signatures[i], c.signatures[j]).similarity; });
-  if (o.d2)
-    methods.emplace_back ("d2", [&] (std::size_t i, std::size_t j) { return pcl_flowseg::histogramSimilarity (c.d2[i], c.d2[j]); });
-  if (o.esf)
-    methods.emplace_back ("esf", [&] (std::size_t i, std::size_t j) { return pcl_flowseg::histogramSimilarity (c.esf[i], c.esf[j]); });
-  const std::vector<std::string> order = {"flowseg", "d2", "esf"};
-  std::vector<pcl_flowseg::MethodEvaluation> results;
-  for (const auto& method : methods)
+  std::vector<pcl::SignatureMatcher> matchers (o.signature_methods.size ());
+  std::vector<std::tuple<std::string, std::size_t, std::function<double (std::size_t, std::size_t)>>> methods;
+  for (std::size_t m = 0; m < o.signature_methods.size (); ++m)
   {
-    const std::size_t k = static_cast<std::size_t> (std::find (order.begin (), order.end (), method.first) - order.begin ());
+    matchers[m].setParameters (o.match);
+    matchers[m].setMethod (o.signature_methods[m]);
+    methods.emplace_back (pcl_flowseg::matchMethodName (o.signature_methods[m]), 0, [&, m] (std::size_t i, std::size_t j) {
+      return matchers[m].match (c.signatures[i], c.signatures[j]).similarity;
+    });
+  }
+  if (o.d2)
+    methods.emplace_back ("d2", 1, [&] (std::size_t i, std::size_t j) { return pcl_flowseg::histogramSimilarity (c.d2[i], c.d2[j]); });
+  if (o.esf)
+    methods.emplace_back ("esf", 2, [&] (std::size_t i, std::size_t j) { return pcl_flowseg::histogramSimilarity (c.esf[i], c.esf[j]); });
+  std::vector<pcl_flowseg::MethodEvaluation> results;
+  for (const auto& [name, described_by, similarity] : methods)
+  {
     pcl_flowseg::MethodEvaluation e;
-    if (const pcl_flowseg::Status s = evaluateMethod (method.first, c.describe_ms[k], method.second, o, c, e); !s)
+    if (const pcl_flowseg::Status s = evaluateMethod (name, c.describe_ms[described_by], similarity, o, c, e); !s)
       return p.failure (s.message);
     printScores (e, planar);
     results.push_back (e);
@@ -215,11 +248,8 @@ main (int argc, char** argv)
     return status;
   if (roots.size () != 1 || o.output.empty ())
     return parser.usageError (roots.size () > 1 ? "more than one ROOT" : "need ROOT and --output DIR");
-  o.flowseg = o.methods.find ("flowseg") != std::string::npos;
-  o.d2 = o.methods.find ("d2") != std::string::npos;
-  o.esf = o.methods.find ("esf") != std::string::npos;
-  if (!o.flowseg && !o.d2 && !o.esf)
-    return parser.usageError ("--methods names none of flowseg, d2, esf");
+  if (const pcl_flowseg::Status s = parseMethods (o); !s)
+    return parser.usageError (s.message);
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
 
   Collection c;

@@ -15,7 +15,7 @@
 namespace {
 
 void
-printMatch (const pcl::SignatureMatcher::Result& m, const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b)
+printAlignment (const pcl::SignatureMatcher::Result& m, const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b)
 {
   std::printf ("similarity %.4f\nscore %.4f (A: %zu features, B: %zu)\nmirrored %s\n", m.similarity, m.score, a.points.size (),
                b.points.size (), m.mirrored ? "yes" : "no");
@@ -28,6 +28,24 @@ printMatch (const pcl::SignatureMatcher::Result& m, const pcl_flowseg::Signature
   std::printf ("translation %.5f %.5f %.5f\n", m.translation.x (), m.translation.y (), m.translation.z ());
 }
 
+/** The description methods: similarity, distance, and every component's distance. */
+void
+printDescriptionMatch (const pcl::SignatureMatcher::Result& m, const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b,
+                       const pcl_flowseg::MatchParameters& match)
+{
+  std::printf ("similarity %.4f\ndistance %.4f (A: %zu parts, B: %zu)\ncomponents", m.similarity, m.score,
+               a.description.parts.size (), b.description.parts.size ());
+  for (pcl_flowseg::MatchMethod method : pcl_flowseg::kMatchMethods)
+    if (method != pcl_flowseg::MatchMethod::Combined && method != pcl_flowseg::MatchMethod::Paper)
+    {
+      pcl::SignatureMatcher component;
+      component.setParameters (match);
+      component.setMethod (method);
+      std::printf (" %s %.4f", pcl_flowseg::matchMethodName (method), component.match (a, b).score);
+    }
+  std::printf ("\n");
+}
+
 } // namespace
 
 int
@@ -37,8 +55,10 @@ main (int argc, char** argv)
   flowseg_app::SignatureOptions signature;
   pcl_flowseg::MatchParameters match;
   flowseg_app::OptionParser p ("flowseg_match", "flowseg_match A B [options]",
-                               "Prints the similarity (1 = identical signatures), the paper's score, the matched features and\n"
-                               "the transformation mapping B's normalised signature onto A's.");
+                               "Prints the method and the similarity (1 = identical signatures). With --method paper also the\n"
+                               "paper's score, the matched features and the transformation mapping B's normalised signature onto\n"
+                               "A's; with the other methods the distance (similarity = exp(-distance)) and each component's.");
+  flowseg_app::addMatchMethodOption (p, match);
   flowseg_app::addMatchOptions (p, match);
   flowseg_app::addMergeOptions (p, params.merge);
   flowseg_app::addSignatureOptions (p, signature);
@@ -58,6 +78,13 @@ main (int argc, char** argv)
   }
   pcl::SignatureMatcher matcher;
   matcher.setParameters (match);
-  printMatch (matcher.match (a, b), a, b);
+  const pcl::SignatureMatcher::Result m = matcher.match (a, b);
+  if (!m.status)
+    return p.failure (m.status.message);
+  std::printf ("method %s\n", pcl_flowseg::matchMethodName (match.method));
+  if (match.method == pcl_flowseg::MatchMethod::Paper)
+    printAlignment (m, a, b);
+  else
+    printDescriptionMatch (m, a, b, match);
   return flowseg_app::kExitSuccess;
 }

@@ -185,7 +185,7 @@ expect "db query finds the class" 0 "^1.*snowman3d" -- "$db" query "$work/shapes
 expect "db add" 0 "10 shapes" -- "$db" add "$work/shapes.db" "$src/samples/hand2d.pcd" --label hand
 expect "db query with few candidates lists the rest unaligned" 0 "^3	-	-" -- "$db" query "$work/shapes.db" "$work/tree/snowman3d/snowman3d-1.pcd" -k 3 --candidates 2
 expect "db bad candidates" 2 "candidates" -- "$db" query "$work/shapes.db" x.pcd --candidates -1
-expect "db query reports its time" 0 "aligned): " -- "$db" query "$work/shapes.db" "$work/tree/animal3d/animal3d-2.pcd"
+expect "db query reports its time" 0 "compared in full): " -- "$db" query "$work/shapes.db" "$work/tree/animal3d/animal3d-2.pcd"
 printf 'not a database\n' > "$work/foreign.db"
 expect "db foreign file" 1 "not a pcl_flowseg signature database" -- "$db" query "$work/foreign.db" "$work/tree/animal3d/animal3d-2.pcd"
 expect "db missing file" 1 "cannot open" -- "$db" list "$work/none.db"
@@ -214,10 +214,10 @@ present=$("$db" list "$work/conc.db" | wc -l)
 [ ! -s "$work/conc.err" ]; check "concurrent adds report no error" $?
 
 # --- damaged databases: every verb refuses them with the line, none changes them ----------------
-printf 'pcl_flowseg signature database 1\nshapes 2\nshape a 3 1 1 0.02 1 one\np 0 0 0 1\n' > "$work/truncated.db"
-printf 'pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 1 one\np 0 0 1 8888888888888888888888888888888888880.6\n' > "$work/absurd.db"
-printf 'pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 3 one\np 0 0 0 1\nshape b 3 1 1 0.02 1 two\n' > "$work/counts.db"
-printf 'pcl_flowseg signature database 1\n\x00\x01\xff\xfe garbage \x80\n' > "$work/garbage.db"
+printf 'pcl_flowseg signature database 2\nshapes 2\nshape a 3 1 1 0.02 1 0 one\np 0 0 0 1\n' > "$work/truncated.db"
+printf 'pcl_flowseg signature database 2\nshapes 1\nshape a 3 1 1 0.02 1 0 one\np 0 0 1 8888888888888888888888888888888888880.6\n' > "$work/absurd.db"
+printf 'pcl_flowseg signature database 2\nshapes 1\nshape a 3 1 1 0.02 3 0 one\np 0 0 0 1\nshape b 3 1 1 0.02 1 0 two\n' > "$work/counts.db"
+printf 'pcl_flowseg signature database 2\n\x00\x01\xff\xfe garbage \x80\n' > "$work/garbage.db"
 for bad in truncated absurd counts garbage; do
   cp "$work/$bad.db" "$work/$bad.before"
   expect "db list $bad database" 1 "$bad.db" -- "$db" list "$work/$bad.db"
@@ -236,7 +236,7 @@ if command -v python3 >/dev/null 2>&1; then
   python3 - "$work/eval" <<'PY'
 import csv, json, sys
 d = json.load(open(sys.argv[1] + "/scores.json"))
-for m in ("flowseg", "d2", "esf"):
+for m in ("flowseg", "paper", "parts", "thickness", "inner", "solid", "d2", "esf"):
     s = d["methods"][m]
     assert 0 <= s["first_tier"] <= 1 and s["queries"] == 9, m
     rows = list(csv.reader(open(sys.argv[1] + "/similarity_%s.csv" % m)))
@@ -263,6 +263,11 @@ expect "signature missing file" 1 "cannot open" -- "$sig" "$work/none.pcd"
 expect "signature corrupt file" 1 "not a PCD" -- "$sig" "$work/corrupt.pcd"
 expect "match itself" 0 "similarity 1.0000" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/animal3d.pcd"
 expect "match two" 0 "similarity" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --no-mirror
+expect "match reports every component" 0 "components parts .* thickness .* inner .* solid " -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd"
+expect "match paper method aligns" 0 "mirrored" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --method paper
+expect "match unknown method" 2 "method" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --method d2
+expect "match 2D against 3D refused" 1 "2D with a 3D" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/star2d.pcd"
+expect "db query by one component" 0 "method inner" -- "$db" query "$work/shapes.db" "$work/tree/animal3d/animal3d-2.pcd" --method inner
 expect "match one input" 2 "two inputs" -- "$mat" "$src/samples/animal3d.pcd"
 expect "match corrupt file" 1 "not a PCD" -- "$mat" "$src/samples/animal3d.pcd" "$work/corrupt.pcd"
 expect "match missing file" 1 "cannot open" -- "$mat" "$work/none.pcd" "$src/samples/animal3d.pcd"

@@ -61,6 +61,7 @@ TEST (Database, SaveLoadAddQuery)
   Signature q;
   q.points = {{V (5, 5, 5), 0.61}, {V (5, 5, 6), 0.39}}; // the first shape, moved and turned
   pcl::SignatureMatcher matcher;
+  matcher.setMethod (MatchMethod::Paper); // hand-made signatures have no descriptions
   const auto hits = back.query (q, 1, matcher);
   ASSERT_EQ (hits.size (), 1u);
   EXPECT_EQ (back.entries ()[hits[0].entry].name, "a b/one.pcd");
@@ -76,28 +77,46 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
     std::ofstream (p) << text;
     return p;
   };
-  const std::string head = "pcl_flowseg signature database 1\nshapes 1\n";
+  const std::string head = "pcl_flowseg signature database 2\nshapes 1\n";
+  const auto bins = [] (const std::string& tag) { // a distribution line: all in the first bin
+    std::string line = tag + " 1";
+    for (std::size_t k = 1; k < kDistributionBins; ++k)
+      line += " 0";
+    return line + "\n";
+  };
   struct Case { std::string text, expected; };
   const std::vector<Case> cases = {
       {"hello world\n", "not a pcl_flowseg signature database"},
       {"pcl_flowseg signature database 7\nshapes 0\n", "version"},
-      {"pcl_flowseg signature database 1\nshapes x\n", ":2:"},
+      {"pcl_flowseg signature database 2\nshapes x\n", ":2:"},
+      // Version 1 (no descriptions) is refused with what to do, never misread.
+      {"pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 1 name\np 0 0 0 1\n", ":1: a version 1 database"},
       // A count the file cannot hold is refused before anything is allocated (fuzzing: 44 million
       // shapes in a 49-byte file asked for 4 GB).
-      {"pcl_flowseg signature database 1\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
-      {"pcl_flowseg signature database 1\nshapes -1\n", ":2:"},
-      {head + "shape a 3 1 1 0.02 2 name\np 0 0 0 0.5\n", ":5:"},
-      {head + "shape a 3 1 1 0.02 1 name\np 0 0 nan 0.5\n", ":4:"},
-      {head + "shape a 4 1 1 0.02 1 name\np 0 0 0 1\n", ":3:"},
-      {head + "shape a 3 1 1 0.02 1\np 0 0 0 1\n", "name"},
+      {"pcl_flowseg signature database 2\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
+      {"pcl_flowseg signature database 2\nshapes -1\n", ":2:"},
+      {head + "shape a 3 1 1 0.02 2 0 name\np 0 0 0 0.5\n", ":5:"},
+      {head + "shape a 3 1 1 0.02 1 0 name\np 0 0 nan 0.5\n", ":4:"},
+      {head + "shape a 4 1 1 0.02 1 0 name\np 0 0 0 1\n", ":3:"},
+      {head + "shape a 3 1 1 0.02 1 0\np 0 0 0 1\n", "name"},
       // Numbers that parse but are absurd: refused at their line, never handed to a query.
-      {head + "shape a 3 1 1 0.02 1 name\np 0 0 1 88888888888888888888888888888880.6\n", ":4: the weight"},
-      {head + "shape a 3 1 1 0.02 1 name\np 1e300 0 0 1\n", ":4: coordinates"},
-      {head + "shape a 3 1 1 0.02 1 name\np 0 0 0 -0.5\n", ":4: the weight"},
-      {head + "shape a 3 0 1 0.02 1 name\np 0 0 0 1\n", ":3: shape 'name': the unit"},
-      {head + "shape a 3 1 1 0.02 2 name\np 0 0 0 0.5\np 1 0 0 0.2\n", ":3: shape 'name': the weights sum"},
-      {head + "shape a 3 1 1 0.02 2 name\np 0 0 0 0.4\np 1 0 0 0.6\n", ":3: shape 'name': the points are not ordered"},
-      {head + "shape a 3 1 1 1.5 1 name\np 0 0 0 1\n", ":3: shape 'name': "},
+      {head + "shape a 3 1 1 0.02 1 0 name\np 0 0 1 88888888888888888888888888888880.6\n", ":4: the weight"},
+      {head + "shape a 3 1 1 0.02 1 0 name\np 1e300 0 0 1\n", ":4: coordinates"},
+      {head + "shape a 3 1 1 0.02 1 0 name\np 0 0 0 -0.5\n", ":4: the weight"},
+      {head + "shape a 3 0 1 0.02 1 0 name\np 0 0 0 1\n", ":3: shape 'name': the unit"},
+      {head + "shape a 3 1 1 0.02 2 0 name\np 0 0 0 0.5\np 1 0 0 0.2\n", ":3: shape 'name': the weights sum"},
+      {head + "shape a 3 1 1 0.02 2 0 name\np 0 0 0 0.4\np 1 0 0 0.6\n", ":3: shape 'name': the points are not ordered"},
+      {head + "shape a 3 1 1 1.5 1 0 name\np 0 0 0 1\n", ":3: shape 'name': "},
+      // Descriptions: every line and number checked.
+      {head + "shape a 3 1 1 0.02 1 17 name\np 0 0 0 1\n", ":3: expected 'shape"},
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5\n", ":5: expected 'q"},
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\nt 1 0 0\n", ":6: expected 't' and 32 numbers"},
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 0.5 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s"),
+       ":3: shape 'name': the part weights sum"},
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s"),
+       ":3: shape 'name': part 1 has a thickness"},
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + "s 0.5 0.5 0.5\n",
+       ":8: expected 's'"},
       {"", "not a pcl_flowseg"},
   };
   for (std::size_t k = 0; k < cases.size (); ++k)
@@ -195,7 +214,8 @@ TEST (Database, CandidateIndexAlignsTheNearestSummariesFirst)
   db.add (entry ("copy", "target", turned));
   Signature query;
   query.points = query_points;
-  const pcl::SignatureMatcher matcher;
+  pcl::SignatureMatcher matcher;
+  matcher.setMethod (MatchMethod::Paper);
 
   db.setCandidates (5);
   const auto hits = db.query (query, 0, matcher);

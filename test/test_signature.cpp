@@ -44,6 +44,14 @@ transformed (const std::vector<V>& pts, double angle, const V& axis, double scal
   return out;
 }
 
+pcl::SignatureMatcher
+paperMatcher ()
+{
+  pcl::SignatureMatcher matcher;
+  matcher.setMethod (MatchMethod::Paper);
+  return matcher;
+}
+
 } // namespace
 
 TEST (Signature, FeaturesOfTheAnimal)
@@ -87,7 +95,7 @@ TEST_P (MatchInvariance, ATransformedResampledCopyScoresAtTheTop)
   const auto copy_pts = transformed (flowseg_test::shapeSample (name, n, 99), 1.1,
                                      name.find ("2d") != std::string::npos ? V (0, 0, 1) : V (1, -2, 0.5), 3.5, true, V (4, -7, 2));
   const Signature copy = signatureOf (copy_pts);
-  pcl::SignatureMatcher matcher;
+  pcl::SignatureMatcher matcher = paperMatcher ();
   const auto self = matcher.match (query, copy);
   EXPECT_GT (self.score, 0.8 * static_cast<double> (query.points.size ()) - 0.2) << name;
   // Every other shape of the same dimension scores lower.
@@ -107,7 +115,7 @@ TEST (Match, SymmetricAndTheTransformMapsPartners)
 {
   const Signature a = signatureOf (flowseg_test::shapeSample ("animal3d", 3000, 1));
   const Signature b = signatureOf (transformed (flowseg_test::shapeSample ("animal3d", 3000, 2), 0.7, V (0, 0, 1), 2.0, false, V::Zero ()));
-  pcl::SignatureMatcher matcher;
+  pcl::SignatureMatcher matcher = paperMatcher ();
   const auto ab = matcher.match (a, b);
   const auto ba = matcher.match (b, a);
   EXPECT_DOUBLE_EQ (ab.score, ba.score);
@@ -129,7 +137,7 @@ TEST (Match, MirroringIsFoundOnlyWhenAllowed)
   Signature b = a;
   for (auto& p : b.points)
     p.position.z () = -p.position.z ();
-  pcl::SignatureMatcher matcher;
+  pcl::SignatureMatcher matcher = paperMatcher ();
   const auto with = matcher.match (a, b);
   EXPECT_NEAR (with.score, 4.0, 1e-9);
   EXPECT_TRUE (with.mirrored);
@@ -143,7 +151,7 @@ TEST (Match, DegenerateSignatures)
   Signature empty, one, two;
   one.points = {{V::Zero (), 1.0}};
   two.points = {{V::Zero (), 0.6}, {V (1, 0, 0), 0.4}};
-  pcl::SignatureMatcher matcher;
+  pcl::SignatureMatcher matcher = paperMatcher ();
   EXPECT_EQ (matcher.match (empty, empty).score, 0.0);
   EXPECT_EQ (matcher.match (empty, one).score, -1.0);
   EXPECT_EQ (matcher.match (one, empty).score, -1.0);
@@ -174,12 +182,14 @@ TEST (FeatureSignature, PclStyle)
 
 TEST (Match, ParametersRoundTripAndAreChecked)
 {
-  pcl::SignatureMatcher matcher;
+  EXPECT_EQ (pcl::SignatureMatcher ().getMethod (), MatchMethod::Combined); // the default
+  pcl::SignatureMatcher matcher = paperMatcher ();
   EXPECT_EQ (matcher.getThreshold (), MatchParameters ().threshold);
   MatchParameters p;
   p.threshold = 0.25;
   p.allow_mirror = false;
   p.alignment_points = 6;
+  p.method = MatchMethod::Paper;
   matcher.setParameters (p);
   EXPECT_EQ (matcher.getThreshold (), 0.25);
   EXPECT_FALSE (matcher.getAllowMirror ());

@@ -94,20 +94,34 @@ addSignatureOptions (OptionParser& p, SignatureOptions& o)
 void
 addMatchOptions (OptionParser& p, pcl_flowseg::MatchParameters& match)
 {
-  p.number ("--threshold", "T", "largest distance between matched features, in the signatures'\nnormalised unit",
+  p.number ("--threshold", "T", "largest distance between matched features, in the signatures'\nnormalised unit (paper)",
             match.threshold, [] (double v) {
               pcl_flowseg::MatchParameters m;
               m.threshold = v;
               return pcl_flowseg::checkMatchParameters (m);
             });
-  p.count ("--alignment-points", "N", "heaviest features that generate alignments", match.alignment_points, 0,
+  p.count ("--alignment-points", "N", "heaviest features that generate alignments (paper)", match.alignment_points, 0,
            std::numeric_limits<int>::max (), [] (long long v) {
              pcl_flowseg::MatchParameters m;
              m.alignment_points = static_cast<int> (v);
              return pcl_flowseg::checkMatchParameters (m);
            });
   bool* mirror = &match.allow_mirror;
-  p.action ("--no-mirror", "do not match mirror images", [mirror] () { *mirror = false; });
+  p.action ("--no-mirror", "do not match mirror images (paper)", [mirror] () { *mirror = false; });
+}
+
+void
+addMatchMethodOption (OptionParser& p, pcl_flowseg::MatchParameters& match)
+{
+  std::vector<std::pair<std::string, pcl_flowseg::MatchMethod>> choices;
+  for (pcl_flowseg::MatchMethod m : pcl_flowseg::kMatchMethods)
+    choices.emplace_back (pcl_flowseg::matchMethodName (m), m);
+  p.choice ("--method", "M",
+            "how shapes are compared: flowseg (parts, thickness and inner or solid\n"
+            "distances combined; the best measured), paper (the paper's weighted points\n"
+            "and alignment; --threshold, --alignment-points and --no-mirror apply to it\n"
+            "only), or one component: parts, thickness, inner, solid",
+            match.method, choices);
 }
 
 } // namespace flowseg_app

@@ -40,4 +40,8 @@ addSignatureOptions (OptionParser& parser, SignatureOptions& options);
 void
 addMatchOptions (OptionParser& parser, pcl_flowseg::MatchParameters& match);
 
+/** \brief --method M (flowseg, paper, parts, thickness, inner, solid). */
+void
+addMatchMethodOption (OptionParser& parser, pcl_flowseg::MatchParameters& match);
+
 } // namespace flowseg_app

@@ -222,6 +222,15 @@ addOtherKeywords (std::map<std::string, Keyword>& k)
                  c.input.seed = static_cast<std::uint32_t> (seed);
                  return r;
                }};
+  k["method"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
+                   std::vector<std::string> names;
+                   for (pcl_flowseg::MatchMethod method : pcl_flowseg::kMatchMethods)
+                     names.emplace_back (pcl_flowseg::matchMethodName (method));
+                   std::size_t i = 0;
+                   const Conversion r = toChoice (n, v, names, i);
+                   m.method = pcl_flowseg::kMatchMethods[i];
+                   return r;
+                 }};
   k["threshold"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
                       return toNumber (n, v, m.threshold);
                     }};
@@ -315,7 +324,10 @@ flowArguments (const pcl_flowseg::FlowParameters& p)
 Arguments
 matchArguments (const pcl_flowseg::MatchParameters& m)
 {
-  return {{"threshold", m.threshold}, {"allow_mirror", m.allow_mirror}, {"alignment_points", static_cast<std::int64_t> (m.alignment_points)}};
+  return {{"method", std::string (pcl_flowseg::matchMethodName (m.method))},
+          {"threshold", m.threshold},
+          {"allow_mirror", m.allow_mirror},
+          {"alignment_points", static_cast<std::int64_t> (m.alignment_points)}};
 }
 
 namespace {

@@ -96,11 +96,12 @@ void
 bindSignatureClass (py::module_& m)
 {
   py::class_<Signature> (m, "Signature",
-                         "A shape's significant interior features as weighted points, normalised for translation, "
-                         "rotation, mirroring and scale.")
+                         "A shape's significant interior features as weighted points, and its description by parts and "
+                         "interior distributions; normalised for translation, rotation, mirroring and scale.")
       .def (py::init (&makeSignature), py::arg ("points"), py::arg ("weights"), py::arg ("dimension") = 3, py::arg ("unit") = 1.0,
             py::arg ("interior_volume") = 0.0, py::arg ("significance") = pcl_flowseg::kDefaultSignificance,
-            "A signature from its parts (checked: weights in [0, 1], non-increasing, summing to 1; ...).")
+            "A signature from its weighted points (checked: weights in [0, 1], non-increasing, summing to 1; ...). "
+            "It has no description: compare it with method='paper'.")
       .def_readonly ("dimension", &Signature::dimension)
       .def_property_readonly ("points", [] (const Signature& s) {
             std::vector<Eigen::Vector3d> rows;
@@ -114,6 +115,28 @@ bindSignatureClass (py::module_& m)
               w.push_back (p.weight);
             return py::array_t<double> (static_cast<py::ssize_t> (w.size ()), w.data ());
           }, "(k,) volume shares, decreasing, summing to 1.")
+      .def_property_readonly ("parts", [] (const Signature& s) {
+            const auto& parts = s.description.parts;
+            py::array_t<double> out ({static_cast<py::ssize_t> (parts.size ()), static_cast<py::ssize_t> (6)});
+            auto rows = out.mutable_unchecked<2> ();
+            for (std::size_t i = 0; i < parts.size (); ++i)
+            {
+              const auto& p = parts[i];
+              const double values[6] = {p.weight, p.thickness, p.extent, p.middle_ratio, p.smallest_ratio, p.offset};
+              for (py::ssize_t k = 0; k < 6; ++k)
+                rows (static_cast<py::ssize_t> (i), k) = values[k];
+            }
+            return out;
+          }, "(k, 6) described parts, by decreasing weight: weight, thickness, extent, middle_ratio, smallest_ratio, "
+             "offset (lengths in the signature's unit). Empty for signatures built from arrays.")
+      .def_property_readonly ("distributions", [] (const Signature& s) {
+            py::dict out;
+            const auto& d = s.description;
+            for (const auto& [name, bins] : {std::pair<const char*, const pcl_flowseg::Distribution*> ("thickness", &d.thickness),
+                                             {"inner_distance", &d.inner_distance}, {"solid_distance", &d.solid_distance}})
+              out[name] = py::array_t<double> (static_cast<py::ssize_t> (bins->size ()), bins->data ());
+            return out;
+          }, "The interior distributions (thickness, inner_distance, solid_distance), 32 bins each summing to 1.")
       .def_readonly ("unit", &Signature::unit, "The length unit: interior volume^(1/d), input units.")
       .def_readonly ("interior_volume", &Signature::interior_volume)
       .def_readonly ("significance", &Signature::significance)
@@ -127,9 +150,11 @@ void
 bindMatchResult (py::module_& m)
 {
   using Result = pcl::SignatureMatcher::Result;
-  py::class_<Result> (m, "MatchResult", "The best alignment of two signatures found by match().")
-      .def_readonly ("similarity", &Result::similarity, "score over the larger number of points: 1 for identical signatures.")
-      .def_readonly ("score", &Result::score, "The paper's score (higher is more similar).")
+  py::class_<Result> (m, "MatchResult", "The comparison of two signatures by match().")
+      .def_readonly ("similarity", &Result::similarity,
+                     "1 for identical signatures. paper: score over the larger number of points; other methods: exp(-score).")
+      .def_readonly ("score", &Result::score,
+                     "paper: the paper's score (higher is more similar); other methods: the distance (0 = identical).")
       .def_readonly ("linear", &Result::linear, "3x3 rotation (mirrored when its determinant is -1) mapping b onto a.")
       .def_readonly ("translation", &Result::translation)
       .def_readonly ("mirrored", &Result::mirrored)
@@ -151,8 +176,8 @@ bindSignature (py::module_& m)
          "The signature of a shape file (points, meshes sampled with mesh_points and seed, silhouette images), "
          "as flowseg_db computes it. Raises OSError when the file cannot be read or segmented.");
   m.def ("match", &match, py::arg ("a"), py::arg ("b"),
-         "Aligns and scores two signatures; keywords threshold, allow_mirror, alignment_points. match(a, b) equals "
-         "match(b, a) in similarity.");
+         "Compares two signatures; keywords method ('flowseg' default, 'paper', 'parts', 'thickness', 'inner', 'solid'), "
+         "and for 'paper' threshold, allow_mirror, alignment_points. match(a, b) equals match(b, a) in similarity.");
 }
 
 } // namespace pcl_flowseg_python

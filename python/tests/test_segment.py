@@ -52,7 +52,7 @@ def test_parameters_round_trip():
     used = seg.parameters
     for name, value in given.items():
         assert used[name] == value, name
-    assert set(used) == set(fs.defaults()) - {"mesh_points", "seed", "threshold", "allow_mirror", "alignment_points",
+    assert set(used) == set(fs.defaults()) - {"mesh_points", "seed", "method", "threshold", "allow_mirror", "alignment_points",
                                               "k", "candidates"}
     again = fs.segment(points, **used)
     assert (again.labels == seg.labels).all() and again.parameters == used

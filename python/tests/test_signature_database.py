@@ -46,12 +46,21 @@ def test_match_is_symmetric_and_invariant():
     a = fs.signature(points)
     rotation = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
     b = fs.signature(2.5 * points @ rotation.T + np.array([3.0, -1.0, 7.0]))
-    result = fs.match(a, b)
+    result = fs.match(a, b, method="paper")
     assert result.similarity == pytest.approx(1.0, abs=1e-6)
     assert result.linear.shape == (3, 3) and len(result.pairs) == len(a)
+    # The default compares descriptions; the cells they are measured on are drawn in an order that
+    # moving the shape does not change, so a moved copy describes the same.
+    assert fs.match(a, b).similarity == pytest.approx(1.0, abs=1e-9)
+    assert a.parts.shape[1] == 6 and len(a.parts) >= 6 and a.parts[:, 0].sum() == pytest.approx(1.0)
+    assert a.distributions["inner_distance"].sum() == pytest.approx(1.0)
     other = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
     assert fs.match(a, other).similarity == pytest.approx(fs.match(other, a).similarity)
-    assert fs.match(a, other, threshold=0.2, allow_mirror=False, alignment_points=2).alignments > 0
+    assert fs.match(a, other, method="paper", threshold=0.2, allow_mirror=False, alignment_points=2).alignments > 0
+    for method in ("flowseg", "parts", "thickness", "inner", "solid"):
+        assert fs.match(a, other, method=method).similarity < fs.match(a, b, method=method).similarity, method
+    with pytest.raises(ValueError, match="method"):
+        fs.match(a, other, method="d2")
 
 
 def test_concurrent_adds_from_threads_lose_nothing(tmp_path):
@@ -93,7 +102,7 @@ def test_bad_input_raises(tmp_path):
     with pytest.raises(OSError, match="cannot open"):
         fs.Database.open(str(tmp_path / "missing.db"))
     damaged = tmp_path / "damaged.db"
-    damaged.write_text("pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 1 one\np 0 0 1 8e300\n")
+    damaged.write_text("pcl_flowseg signature database 2\nshapes 1\nshape a 3 1 1 0.02 1 0 one\np 0 0 1 8e300\n")
     with pytest.raises(OSError, match="damaged.db:4"):
         fs.Database.open(str(damaged))
     with pytest.raises(OSError):

@@ -5,6 +5,7 @@
 #include <pcl_flowseg/signature/signature.h>
 
 #include <pcl_flowseg/common/feature_significance.h>
+#include <pcl_flowseg/signature/describe_shape.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +51,7 @@ signatureFromSegmentation (const FlowResult& result, double significance, Signat
     p.weight /= kept;
   std::sort (signature.points.begin (), signature.points.end (),
              [] (const WeightedPoint& a, const WeightedPoint& b) { return a.weight > b.weight; });
-  return Status::success ();
+  return describeShape (result, signature.description);
 }
 
 Status
@@ -79,7 +80,7 @@ checkSignature (const Signature& signature)
   }
   if (!s.points.empty () && std::abs (total - 1.0) > 1e-9)
     return Status::error ("the weights sum to " + std::to_string (total) + ", not 1");
-  return Status::success ();
+  return checkShapeDescription (s.description);
 }
 
 } // namespace pcl_flowseg

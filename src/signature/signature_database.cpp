@@ -9,6 +9,8 @@
 
 #include <pcl_flowseg/signature/signature_summary.h>
 
+#include "database_format.h"
+
 #include <flann/flann.hpp>
 
 #include <algorithm>
@@ -23,95 +25,31 @@
 
 namespace pcl_flowseg {
 
-namespace {
-const char* const kMagic = "pcl_flowseg signature database";
-
-Status
-lineError (const std::string& path, std::size_t line, const std::string& what)
-{
-  return Status::error (path + ":" + std::to_string (line) + ": " + what);
-}
-
-/** Reads the first two lines (magic and version, "shapes N") into \a count. Every shape takes a
-  * line of at least 20 bytes ("shape L 3 1 1 0 0 N\n"), so a count the rest of the file cannot
-  * hold is refused before anything is allocated for it. */
-Status
-readHeader (std::istream& in, const std::string& path, std::size_t& count)
-{
-  std::string line, word;
-  if (!std::getline (in, line) || line.compare (0, std::strlen (kMagic), kMagic) != 0)
-    return Status::error (path + ": not a pcl_flowseg signature database");
-  int version = 0;
-  if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version) || version != SignatureDatabase::kVersion)
-    return lineError (path, 1, "unsupported database version (this build reads version " +
-                                   std::to_string (SignatureDatabase::kVersion) + ")");
-  if (!std::getline (in, line) || !(std::istringstream (line) >> word >> count) || word != "shapes")
-    return lineError (path, 2, "expected 'shapes N'");
-  in.clear (); // a file that ends right after this line has set eof
-  const std::streampos here = in.tellg ();
-  in.seekg (0, std::ios::end);
-  const auto rest = static_cast<unsigned long long> (in.tellg () - here);
-  in.seekg (here);
-  if (count > rest / 20)
-    return lineError (path, 2, std::to_string (count) + " shapes cannot fit in the " + std::to_string (rest) +
-                                   " bytes that follow");
-  return Status::success ();
-}
-} // namespace
 
 Status
 SignatureDatabase::load (const std::string& path)
 {
   entries_.clear ();
   by_name_.clear ();
-  index_.reset ();
+  forgetIndexes ();
   std::ifstream in (path, std::ios::binary);
   if (!in)
     return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
   std::size_t count = 0;
-  if (const Status header = readHeader (in, path, count); !header)
+  if (const Status header = readDatabaseHeader (in, path, count); !header)
     return header;
-  std::string line;
-  std::size_t number = 2;
+  LineReader reader{in, path, 2};
   std::vector<ShapeEntry> loaded;
   loaded.reserve (count);
   for (std::size_t s = 0; s < count; ++s)
   {
-    ++number;
-    if (!std::getline (in, line))
-      return Status::error (path + ": ends after " + std::to_string (s) + " of " + std::to_string (count) + " shapes");
-    std::istringstream head (line);
-    std::string word;
     ShapeEntry e;
-    std::size_t points = 0;
-    if (!(head >> word >> e.label >> e.signature.dimension >> e.signature.unit >> e.signature.interior_volume >>
-          e.signature.significance >> points) ||
-        word != "shape" || (e.signature.dimension != 2 && e.signature.dimension != 3) || points > 100000 ||
-        !std::isfinite (e.signature.unit) || !std::isfinite (e.signature.interior_volume))
-      return lineError (path, number, "expected 'shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS NAME'");
-    std::getline (head >> std::ws, e.name);
-    if (e.name.empty ())
-      return lineError (path, number, "shape without a name");
-    const std::size_t shape_line = number;
-    for (std::size_t k = 0; k < points; ++k)
-    {
-      ++number;
-      WeightedPoint p;
-      if (!std::getline (in, line) || !(std::istringstream (line) >> word >> p.position.x () >> p.position.y () >> p.position.z () >> p.weight) ||
-          word != "p")
-        return lineError (path, number, "expected 'p X Y Z WEIGHT'");
-      if (!p.position.allFinite () || p.position.cwiseAbs ().maxCoeff () > kLargestSignatureCoordinate)
-        return lineError (path, number, "coordinates must be finite numbers of at most 1e9 in size");
-      if (!(p.weight >= 0.0 && p.weight <= 1.0))
-        return lineError (path, number, "the weight must be a number in [0, 1]");
-      e.signature.points.push_back (p);
-    }
-    if (const Status checked = checkSignature (e.signature); !checked)
-      return lineError (path, shape_line, "shape '" + e.name + "': " + checked.message);
+    if (const Status read = readShape (reader, s, count, e); !read)
+      return read;
     loaded.push_back (std::move (e));
   }
   entries_ = std::move (loaded);
-  index_.reset ();
+  forgetIndexes ();
   by_name_.clear ();
   for (std::size_t i = 0; i < entries_.size (); ++i)
     by_name_[entries_[i].name] = i;
@@ -157,24 +95,25 @@ SignatureDatabase::saveLocked (const std::string& path) const
     std::ofstream out (tmp, std::ios::binary);
     if (!out)
       return Status::error ("cannot create file");
-    out << kMagic << " " << kVersion << "\nshapes " << entries_.size () << "\n" << std::setprecision (17);
+    writeDatabaseHeader (out, entries_.size ());
     for (const ShapeEntry& e : entries_)
-    {
-      const Signature& s = e.signature;
-      out << "shape " << (e.label.empty () ? "-" : e.label) << " " << s.dimension << " " << s.unit << " " << s.interior_volume << " "
-          << s.significance << " " << s.points.size () << " " << e.name << "\n";
-      for (const auto& p : s.points)
-        out << "p " << p.position.x () << " " << p.position.y () << " " << p.position.z () << " " << p.weight << "\n";
-    }
+      writeShape (out, e);
     out.flush ();
     return out.good () ? Status::success () : Status::error ("write failed");
   }, true);
 }
 
+void
+SignatureDatabase::forgetIndexes ()
+{
+  std::lock_guard<std::mutex> lock (*index_mutex_);
+  indexes_.clear ();
+}
+
 bool
 SignatureDatabase::add (const ShapeEntry& entry)
 {
-  index_.reset ();
+  forgetIndexes ();
   const auto found = by_name_.find (entry.name);
   if (found != by_name_.end ())
   {
@@ -201,41 +140,60 @@ SignatureDatabase::contains (const std::string& name) const
   return by_name_.count (name) > 0;
 }
 
-/** Summaries of the stored signatures in a FLANN k-d tree, one tree per dimension (2D, 3D). */
+namespace {
+
+/** The vector a method's candidates are picked by (signatureSummary or descriptionSummary). */
+std::vector<float>
+candidateSummary (const Signature& signature, MatchMethod method)
+{
+  if (method == MatchMethod::Paper)
+  {
+    const auto summary = signatureSummary (signature);
+    return std::vector<float> (summary.begin (), summary.end ());
+  }
+  const auto summary = descriptionSummary (signature, method);
+  return std::vector<float> (summary.begin (), summary.end ());
+}
+
+} // namespace
+
+/** One method's summaries of the stored signatures in a FLANN k-d tree, one tree per dimension. */
 struct SignatureDatabase::CandidateIndex
 {
   struct Tree
   {
     std::vector<std::size_t> entry;  // row -> entry index
-    std::vector<float> rows;         // kSummarySize floats per row
+    std::vector<float> rows;         // width floats per row
     std::unique_ptr<flann::Index<flann::L2<float>>> index;
   };
   Tree trees[2]; // [0]: 2D, [1]: 3D
+  std::size_t width = 0;
 };
 
 std::shared_ptr<const SignatureDatabase::CandidateIndex>
-SignatureDatabase::candidateIndex () const
+SignatureDatabase::candidateIndex (MatchMethod method) const
 {
   std::lock_guard<std::mutex> lock (*index_mutex_);
-  if (index_)
-    return index_;
+  if (const auto found = indexes_.find (method); found != indexes_.end ())
+    return found->second;
   auto built = std::make_shared<CandidateIndex> ();
   for (std::size_t i = 0; i < entries_.size (); ++i)
   {
     auto& tree = built->trees[entries_[i].signature.dimension == 2 ? 0 : 1];
-    const auto summary = signatureSummary (entries_[i].signature);
+    const std::vector<float> summary = candidateSummary (entries_[i].signature, method);
+    built->width = summary.size ();
     tree.entry.push_back (i);
     tree.rows.insert (tree.rows.end (), summary.begin (), summary.end ());
   }
   for (auto& tree : built->trees)
     if (!tree.entry.empty ())
     {
-      tree.index.reset (new flann::Index<flann::L2<float>> (flann::Matrix<float> (tree.rows.data (), tree.entry.size (), kSummarySize),
+      tree.index.reset (new flann::Index<flann::L2<float>> (flann::Matrix<float> (tree.rows.data (), tree.entry.size (), built->width),
                                                             flann::KDTreeSingleIndexParams (10)));
       tree.index->buildIndex ();
     }
-  index_ = built;
-  return index_;
+  indexes_[method] = built;
+  return built;
 }
 
 std::vector<QueryHit>
@@ -248,7 +206,7 @@ std::vector<QueryHit>
 SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
                           std::size_t candidates) const
 {
-  const auto index = candidateIndex ();
+  const auto index = candidateIndex (matcher.getMethod ());
   const auto& tree = index->trees[signature.dimension == 2 ? 0 : 1];
   const std::size_t stored = tree.entry.size ();
   if (stored == 0)
@@ -257,12 +215,12 @@ SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::
   // k-d tree answers exactly; only as many rows as are needed are asked for.
   const std::size_t aligned = candidates == 0 ? stored : std::min (candidates, stored);
   const std::size_t wanted = k == 0 ? stored : std::min (stored, std::max (k, aligned));
-  auto summary = signatureSummary (signature);
+  std::vector<float> summary = candidateSummary (signature, matcher.getMethod ());
   std::vector<int> rows (wanted);
   std::vector<float> distances (wanted);
   flann::Matrix<int> row_matrix (rows.data (), 1, wanted);
   flann::Matrix<float> distance_matrix (distances.data (), 1, wanted);
-  tree.index->knnSearch (flann::Matrix<float> (summary.data (), 1, kSummarySize), row_matrix, distance_matrix, wanted,
+  tree.index->knnSearch (flann::Matrix<float> (summary.data (), 1, summary.size ()), row_matrix, distance_matrix, wanted,
                          flann::SearchParams (flann::FLANN_CHECKS_UNLIMITED));
   std::vector<QueryHit> hits;
   hits.reserve (wanted);

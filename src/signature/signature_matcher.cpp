@@ -4,6 +4,8 @@
  */
 #include <pcl_flowseg/signature/signature_matcher.h>
 
+#include "description_distances.h"
+
 #include <flann/flann.hpp>
 #include <pcl/console/print.h>
 
@@ -20,6 +22,8 @@ checkMatchParameters (const MatchParameters& params)
 {
   if (!std::isfinite (params.threshold) || params.threshold <= 0.0)
     return Status::error ("the matcher threshold must be a finite number > 0, got " + std::to_string (params.threshold));
+  if (std::find (std::begin (kMatchMethods), std::end (kMatchMethods), params.method) == std::end (kMatchMethods))
+    return Status::error ("the match method is none of the known ones");
   if (params.alignment_points < 1 || params.alignment_points > 100)
     return Status::error ("the alignment points must be a whole number from 1 to 100, got " +
                           std::to_string (params.alignment_points));
@@ -236,12 +240,32 @@ SignatureMatcher::Result
 SignatureMatcher::match (const Signature& a, const Signature& b) const
 {
   Result r;
-  if (r.status = pcl_flowseg::checkMatchParameters (params_); !r.status)
+  r.status = pcl_flowseg::checkMatchParameters (params_);
+  if (r.status && params_.method != pcl_flowseg::MatchMethod::Paper && (a.description.empty () || b.description.empty ()))
+    r.status = pcl_flowseg::Status::error (std::string ("the method ") + pcl_flowseg::matchMethodName (params_.method) +
+                                           " needs signatures with shape descriptions (rebuild older ones)");
+  if (r.status && params_.method != pcl_flowseg::MatchMethod::Paper && a.dimension != b.dimension)
+    r.status = pcl_flowseg::Status::error ("cannot compare a 2D with a 3D signature");
+  if (!r.status)
   {
     PCL_ERROR ("[pcl::SignatureMatcher::match] %s\n", r.status.message.c_str ());
     r.score = r.similarity = -std::numeric_limits<double>::infinity ();
     return r;
   }
+  if (params_.method == pcl_flowseg::MatchMethod::Paper)
+    return matchPaper (a, b);
+  // Each term is symmetric; adding the distance both ways keeps match (a, b) == match (b, a) exact.
+  const double ab = pcl_flowseg::descriptionDistance (params_.method, a.description, b.description, a.dimension);
+  const double ba = pcl_flowseg::descriptionDistance (params_.method, b.description, a.description, a.dimension);
+  r.score = 0.5 * (ab + ba);
+  r.similarity = std::exp (-r.score);
+  return r;
+}
+
+SignatureMatcher::Result
+SignatureMatcher::matchPaper (const Signature& a, const Signature& b) const
+{
+  Result r;
   if (a.points.empty () || b.points.empty ())
   {
     for (const auto& p : a.points)

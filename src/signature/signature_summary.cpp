@@ -4,6 +4,8 @@
  */
 #include <pcl_flowseg/signature/signature_summary.h>
 
+#include "description_distances.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -31,6 +33,65 @@ signatureSummary (const Signature& signature)
   const Eigen::Vector3d eigen = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (moments, Eigen::EigenvaluesOnly).eigenvalues ();
   for (int k = 2; k >= 0; --k) // largest first
     out[at++] = static_cast<float> (std::sqrt (std::max (0.0, eigen[k])));
+  return out;
+}
+
+namespace {
+
+/** The weight of each block of descriptionSummary under \a method. */
+DescriptionWeights
+summaryWeights (MatchMethod method, int dimension)
+{
+  DescriptionWeights w;
+  switch (method)
+  {
+  case MatchMethod::Parts:
+    w.parts = 1.0;
+    break;
+  case MatchMethod::Thickness:
+    w.thickness = 1.0;
+    break;
+  case MatchMethod::InnerDistance:
+    w.inner_distance = 1.0;
+    break;
+  case MatchMethod::SolidDistance:
+    w.solid_distance = 1.0;
+    break;
+  case MatchMethod::Combined:
+  case MatchMethod::Paper:
+    w = dimension == 2 ? kCombinedWeights2d : kCombinedWeights3d;
+    break;
+  }
+  return w;
+}
+
+} // namespace
+
+std::array<float, kDescriptionSummarySize>
+descriptionSummary (const Signature& signature, MatchMethod method)
+{
+  std::array<float, kDescriptionSummarySize> out{};
+  const ShapeDescription& d = signature.description;
+  if (d.empty ())
+    return out;
+  const DescriptionWeights w = summaryWeights (method, signature.dimension);
+  std::size_t at = 0;
+  for (const auto& [h, weight] : {std::pair<const Distribution*, double> (&d.thickness, w.thickness),
+                                  {&d.inner_distance, w.inner_distance}, {&d.solid_distance, w.solid_distance}})
+    for (double v : *h)
+      out[at++] = static_cast<float> (weight * std::sqrt (v));
+  Eigen::Matrix<double, 6, 1> mean = Eigen::Matrix<double, 6, 1>::Zero (), square = mean;
+  for (const PartDescription& p : d.parts)
+  {
+    const Eigen::Matrix<double, 6, 1> x = partPoint (p);
+    mean += p.weight * x;
+    square += p.weight * x.cwiseProduct (x);
+  }
+  const Eigen::Matrix<double, 6, 1> spread = (square - mean.cwiseProduct (mean)).cwiseMax (0.0).cwiseSqrt ();
+  for (int k = 0; k < 6; ++k)
+    out[at++] = static_cast<float> (w.parts * mean[k]);
+  for (int k = 0; k < 6; ++k)
+    out[at++] = static_cast<float> (w.parts * spread[k]);
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <pcl_flowseg/common/feature_significance.h>
 #include <pcl_flowseg/common/flow_result.h>
 #include <pcl_flowseg/common/status.h>
+#include <pcl_flowseg/signature/shape_description.h>
 
 #include <Eigen/Core>
 
@@ -22,7 +23,8 @@ struct WeightedPoint
   double weight = 0.0;                                 ///< volume share among the significant features
 };
 
-/** \brief The signature of a shape: its significant interior features as weighted points.
+/** \brief The signature of a shape: its significant interior features as weighted points (the
+  * paper's), and the shape's description by its parts and interior (ShapeDescription).
   *
   * Normalised so that comparing two signatures is invariant to translation, rotation, mirroring and
   * uniform scale: positions are relative to the volume-weighted centroid of the whole interior and
@@ -35,6 +37,8 @@ struct Signature
   double unit = 1.0;           ///< the length unit, in input units (interior volume^(1/d))
   double interior_volume = 0.0; ///< in input units
   double significance = kDefaultSignificance;
+  /** Parts and interior distributions, for every method but the paper's (describeShape). */
+  ShapeDescription description;
 };
 
 /** \brief Largest coordinate a signature point may have, in the signature's unit: a feature's
@@ -45,12 +49,12 @@ constexpr double kLargestSignatureCoordinate = 1e9;
 /** \brief Why \a signature is not one signatureFromSegmentation could have made (a message), or
   * success: dimension 2 or 3; unit finite and > 0; interior volume finite and >= 0; significance in
   * [0, 1); positions finite and within kLargestSignatureCoordinate; weights in [0, 1], non-increasing,
-  * summing to 1. Whatever is read from outside is checked with it before it is compared. */
+  * summing to 1; a description that checkShapeDescription accepts. Whatever is read from outside is checked with it before it is compared. */
 Status
 checkSignature (const Signature& signature);
 
-/** \brief Builds the signature from a segmentation with interior/exterior separation. Fails when the
-  * separation was not computed or found no interior. */
+/** \brief Builds the signature (points and description) from a segmentation with interior/exterior
+  * separation. Fails when the separation was not computed or found no interior. */
 Status
 signatureFromSegmentation (const FlowResult& result, double significance, Signature& signature);
 

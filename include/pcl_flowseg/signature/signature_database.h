@@ -4,12 +4,14 @@
  */
 #pragma once
 
+#include <pcl_flowseg/signature/shape_entry.h>
 #include <pcl_flowseg/signature/signature.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
 #include <pcl_flowseg/common/status.h>
 #include <pcl_flowseg/io/file_lock.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -18,13 +20,6 @@
 
 namespace pcl_flowseg {
 
-/** \brief One stored shape. */
-struct ShapeEntry
-{
-  std::string name;  ///< identifies the shape (the file path relative to the database's root)
-  std::string label; ///< its class (the name of the folder holding the file)
-  Signature signature;
-};
 
 /** \brief A query result. */
 struct QueryHit
@@ -47,17 +42,21 @@ constexpr std::size_t kDefaultCandidates = 24;
 
 /** \brief Signatures of many shapes, kept in one text file:
   *
-  *     pcl_flowseg signature database 1
+  *     pcl_flowseg signature database 2
   *     shapes N
-  *     shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS NAME...
-  *     p X Y Z WEIGHT          (POINTS lines)
+  *     shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS NAME...
+  *     p X Y Z WEIGHT                                   (POINTS lines)
+  *     q WEIGHT THICKNESS EXTENT MIDDLE SMALLEST OFFSET (PARTS lines: ShapeDescription::parts)
+  *     t B1 ... B32    i B1 ... B32    s B1 ... B32     (when PARTS > 0: the thickness, inner- and
+  *                                                       solid-distance distributions)
   *
   * Labels contain no white space; names may. Loading checks the header, the version, every count
-  * and number, and reports the line of the first problem. */
+  * and number, and reports the line of the first problem. Version 1 files (no descriptions) are
+  * refused with a message that says to rebuild them. */
 class SignatureDatabase
 {
 public:
-  static constexpr int kVersion = 1;
+  static constexpr int kVersion = kDatabaseVersion;
 
   /** Reads a database file. It needs no lock: writers replace the file in one rename, so a
     * reader sees one complete version. Every value is checked (checkSignature); the first problem
@@ -88,15 +87,17 @@ public:
   const std::vector<ShapeEntry>& entries () const { return entries_; }
   std::size_t size () const { return entries_.size (); }
 
-  /** \brief How many stored shapes a query aligns in full: the \a count whose signature summaries
-    * lie nearest to the query's (a FLANN k-d tree over signatureSummary picks them); 0 = every
-    * stored shape (exact ranking; the cost grows with the database). Default kDefaultCandidates. */
+  /** \brief How many stored shapes a query compares in full: the \a count whose summaries lie
+    * nearest to the query's (a FLANN k-d tree over signatureSummary for MatchMethod::Paper,
+    * descriptionSummary for the other methods, picks them); 0 = every stored shape (exact ranking;
+    * the cost grows with the database). Default kDefaultCandidates. */
   void setCandidates (std::size_t count) { candidates_ = count; }
   std::size_t getCandidates () const { return candidates_; }
 
-  /** \brief The \a k most similar stored shapes (all when k = 0). The aligned candidates come first,
-    * by decreasing similarity; the other shapes follow by increasing summary distance (aligned =
-    * false). Shapes of another dimension are skipped. Safe to call from several threads. */
+  /** \brief The \a k most similar stored shapes (all when k = 0) under \a matcher's method. The
+    * compared candidates come first, by decreasing similarity; the other shapes follow by
+    * increasing summary distance (aligned = false). Shapes of another dimension are skipped. Safe
+    * to call from several threads. */
   std::vector<QueryHit> query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const;
   /** \brief As above with \a candidates in place of getCandidates(): for callers that share one
     * database between threads asking with different candidate counts. */
@@ -107,13 +108,15 @@ private:
   Status saveLocked (const std::string& path) const;
 
   struct CandidateIndex;
-  /** The candidate index, built on the first query after a change. */
-  std::shared_ptr<const CandidateIndex> candidateIndex () const;
+  /** The candidate index of \a method, built on its first query after a change. */
+  std::shared_ptr<const CandidateIndex> candidateIndex (MatchMethod method) const;
+  /** Drops the candidate indexes (the entries changed). */
+  void forgetIndexes ();
 
   std::vector<ShapeEntry> entries_;
   std::unordered_map<std::string, std::size_t> by_name_;
   std::size_t candidates_ = kDefaultCandidates;
-  mutable std::shared_ptr<const CandidateIndex> index_;
+  mutable std::map<MatchMethod, std::shared_ptr<const CandidateIndex>> indexes_;
   std::shared_ptr<std::mutex> index_mutex_ = std::make_shared<std::mutex> ();
 };
 

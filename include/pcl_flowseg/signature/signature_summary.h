@@ -6,6 +6,7 @@
 #pragma once
 
 #include <pcl_flowseg/signature/signature.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <array>
 
@@ -24,5 +25,17 @@ constexpr std::size_t kSummarySize = 25;
   * Cheap lower-fidelity view: it orders candidates, SignatureMatcher decides. */
 std::array<float, kSummarySize>
 signatureSummary (const Signature& signature);
+
+/** \brief Length of descriptionSummary(). */
+constexpr std::size_t kDescriptionSummarySize = 3 * kDistributionBins + 12;
+
+/** \brief A vector in which shapes whose descriptions are near under \a method (not
+  * MatchMethod::Paper) lie close together (Euclidean distance): the square roots of the three
+  * distributions' bins (so that Euclidean distance behaves like the L1 and chi-square distances),
+  * then the weighted mean and spread of the parts' attribute points, each block scaled by the
+  * method's weight for it (kCombinedWeights3d / 2d; 1 for the single method, 0 for the others).
+  * Zero for a signature without a description. */
+std::array<float, kDescriptionSummarySize>
+descriptionSummary (const Signature& signature, MatchMethod method);
 
 } // namespace pcl_flowseg

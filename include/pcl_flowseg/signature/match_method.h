@@ -1,0 +1,79 @@
+/*
+ * pcl_flowseg - the ways two signatures can be compared, their names, and the weights of the
+ * description methods.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/common/status.h>
+
+#include <string>
+
+namespace pcl_flowseg {
+
+/** \brief How two signatures are compared. Every method is invariant to translation, rotation,
+  * mirroring and uniform scale. */
+enum class MatchMethod
+{
+  /** The module's default ("flowseg"): a weighted sum of the description distances below, with the
+    * weights kCombinedWeights3d or kCombinedWeights2d. */
+  Combined,
+  /** The paper's: significant features as weighted points, aligned and scored (section 5). */
+  Paper,
+  /** Earth mover's distance between the described parts (ShapeDescription::parts). */
+  Parts,
+  /** L1 distance between the thickness distributions. */
+  Thickness,
+  /** Chi-square distance between the inner-distance distributions. */
+  InnerDistance,
+  /** L1 distance between the solid-distance distributions. */
+  SolidDistance,
+};
+
+/** \brief Every method, the default first. */
+constexpr MatchMethod kMatchMethods[] = {MatchMethod::Combined, MatchMethod::Paper, MatchMethod::Parts,
+                                         MatchMethod::Thickness, MatchMethod::InnerDistance, MatchMethod::SolidDistance};
+
+/** \brief The method's name in files, options and reports: flowseg, paper, parts, thickness,
+  * inner, solid. */
+const char*
+matchMethodName (MatchMethod method);
+
+/** \brief The method called \a name (matchMethodName), or a message listing the names. */
+Status
+parseMatchMethod (const std::string& name, MatchMethod& method);
+
+/** \brief Weights of the description distances in MatchMethod::Combined. */
+struct DescriptionWeights
+{
+  double parts = 0.0;
+  double thickness = 0.0;
+  double inner_distance = 0.0;
+  double solid_distance = 0.0;
+};
+
+/** \brief The combination for 3D shapes, chosen on shrec07_dev and TOSCA together (the best sum of
+  * nearest neighbour and first tier over a grid of weights; docs/method.md). */
+constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 3.0, 1.5};
+
+/** \brief The combination for 2D shapes, chosen on Kimia-216 and Tari-1000 together (the best sum of
+  * bull's eye scores over a grid of weights). */
+constexpr DescriptionWeights kCombinedWeights2d{2.0, 0.5, 4.5, 3.0};
+
+/** \brief Weights of a part's attributes in the cost of moving it onto another part (MatchMethod::Parts):
+  * the distance between two parts is the Euclidean distance of (weight x attribute), with logs of
+  * thickness, extent and weight. */
+struct PartAttributeWeights
+{
+  double thickness = 1.0;      ///< log PartDescription::thickness
+  double extent = 0.5;         ///< log PartDescription::extent
+  double middle_ratio = 1.0;   ///< PartDescription::middle_ratio
+  double smallest_ratio = 1.0; ///< PartDescription::smallest_ratio
+  double weight = 0.2;         ///< log PartDescription::weight
+  double offset = 0.5;         ///< PartDescription::offset
+};
+
+/** \brief The part attribute weights MatchMethod::Parts uses. */
+constexpr PartAttributeWeights kPartAttributeWeights{};
+
+} // namespace pcl_flowseg

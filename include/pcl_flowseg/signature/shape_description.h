@@ -1,0 +1,81 @@
+/*
+ * pcl_flowseg - a shape described by its interior features and its interior triangulation, for
+ * retrieval beyond the paper's weighted points: the features as parts with attributes, and three
+ * distributions measured inside the shape (thickness, inner distances, solid distances).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/common/status.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace pcl_flowseg {
+
+/** \brief Bins of each interior distribution. */
+constexpr std::size_t kDistributionBins = 32;
+/** \brief Smallest share of the interior volume an interior feature needs to be described as a part:
+  * small enough to keep fingers and ears of a 10,000-point sample, large enough to leave out the
+  * slivers that noise and sampling make. */
+constexpr double kPartShare = 0.005;
+/** \brief Most parts described (the largest); a bearing or a spring can have hundreds of features. */
+constexpr std::size_t kMaxParts = 16;
+/** \brief Interior cells drawn (volume-weighted) for the distributions: the same for every shape, so
+  * that histograms of different shapes have the same sampling noise. */
+constexpr std::size_t kInteriorSamples = 2048;
+/** \brief Drawn cells from which inner distances (and solid distances) to all drawn cells are
+  * measured: 64 x 2048 distances per shape. They are spread over the shape (farthest points) and
+  * weighted by the share of drawn cells nearest to each. */
+constexpr std::size_t kDistanceSources = 64;
+/** \brief Range of the thickness distribution: natural log of a cell's circumradius over the unit. */
+constexpr double kThicknessLogLow = -5.0, kThicknessLogHigh = 0.0;
+/** \brief Range of the inner-distance distribution: natural log of the distance over the unit. */
+constexpr double kInnerLogLow = -3.0, kInnerLogHigh = 3.0;
+/** \brief Range of the solid-distance distribution: distance over the mean such distance. */
+constexpr double kSolidHigh = 3.0;
+
+/** \brief One interior feature described for part matching. Lengths are in the unit of its
+  * signature (interior volume^(1/d)), so they do not change with scale. */
+struct PartDescription
+{
+  double weight = 0.0;         ///< volume share among the described parts (they sum to 1)
+  double thickness = 0.0;      ///< radius of the part's largest empty ball (its maximum's circumradius)
+  double extent = 0.0;         ///< root of the largest principal variance of the part's cells
+  double middle_ratio = 0.0;   ///< root of the middle over the largest principal variance, in [0, 1]
+  double smallest_ratio = 0.0; ///< root of the smallest over the largest (0 in 2D), in [0, 1]
+  double offset = 0.0;         ///< distance of the part's centroid from the interior's centroid
+};
+
+/** \brief A volume-weighted histogram that sums to 1 (values outside the range go to the end bins). */
+using Distribution = std::array<double, kDistributionBins>;
+
+/** \brief What describeShape measures; all of it invariant to translation, rotation, mirroring and
+  * uniform scale. Empty (no parts, zero distributions) when not computed. */
+struct ShapeDescription
+{
+  /** The interior features of at least kPartShare of the interior volume, the kMaxParts largest,
+    * by decreasing weight (the largest feature alone when none reaches the share). */
+  std::vector<PartDescription> parts;
+  /** Circumradii of interior cells (a local thickness: the radius of the empty ball around the
+    * cell), log over the unit, in [kThicknessLogLow, kThicknessLogHigh]. */
+  Distribution thickness{};
+  /** Inner distances between interior cells (shortest paths from centroid to centroid along the
+    * edges of interior cells: they change little when a limb bends), log over the unit, in
+    * [kInnerLogLow, kInnerLogHigh]. */
+  Distribution inner_distance{};
+  /** Straight distances between interior cells over their mean, in [0, kSolidHigh]. */
+  Distribution solid_distance{};
+
+  bool empty () const { return parts.empty (); }
+};
+
+/** \brief Why \a description is not one describeShape could have made (a message), or success: an
+  * empty description, or 1 to kMaxParts parts with weights in (0, 1] ordered by decreasing weight
+  * and summing to 1, lengths finite and > 0 (offset >= 0), ratios in [0, 1], and distributions of
+  * entries in [0, 1] summing to 1. */
+Status
+checkShapeDescription (const ShapeDescription& description);
+
+} // namespace pcl_flowseg

@@ -1,0 +1,25 @@
+/*
+ * pcl_flowseg - one shape stored in a signature database, and the database file's version.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/signature/signature.h>
+
+#include <string>
+
+namespace pcl_flowseg {
+
+/** \brief Version of the signature database file this build reads and writes (2: signatures with
+  * shape descriptions). */
+constexpr int kDatabaseVersion = 2;
+
+/** \brief One stored shape. */
+struct ShapeEntry
+{
+  std::string name;  ///< identifies the shape (the file path relative to the database's root)
+  std::string label; ///< its class (the name of the folder holding the file)
+  Signature signature;
+};
+
+} // namespace pcl_flowseg

@@ -1,0 +1,170 @@
+/*
+ * pcl_flowseg - the signature database's text format: reading with every value checked, writing.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "database_format.h"
+
+#include <cmath>
+#include <cstring>
+#include <iomanip>
+#include <sstream>
+
+namespace pcl_flowseg {
+
+namespace {
+
+const char* const kMagic = "pcl_flowseg signature database";
+
+Status
+lineError (const std::string& path, std::size_t line, const std::string& what)
+{
+  return Status::error (path + ":" + std::to_string (line) + ": " + what);
+}
+
+} // namespace
+
+Status
+LineReader::error (const std::string& what) const
+{
+  return lineError (path, number, what);
+}
+
+Status
+readDatabaseHeader (std::istream& in, const std::string& path, std::size_t& count)
+{
+  std::string line, word;
+  if (!std::getline (in, line) || line.compare (0, std::strlen (kMagic), kMagic) != 0)
+    return Status::error (path + ": not a pcl_flowseg signature database");
+  int version = 0;
+  if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version))
+    return lineError (path, 1, "no database version");
+  if (version == 1)
+    return lineError (path, 1, "a version 1 database (signatures without shape descriptions, written by an older "
+                               "pcl_flowseg): rebuild it with flowseg_db build");
+  if (version != kDatabaseVersion)
+    return lineError (path, 1, "unsupported database version (this build reads version " +
+                                   std::to_string (kDatabaseVersion) + ")");
+  if (!std::getline (in, line) || !(std::istringstream (line) >> word >> count) || word != "shapes")
+    return lineError (path, 2, "expected 'shapes N'");
+  // Every shape takes a line of at least 20 bytes ("shape L 3 1 1 0 0 0 N\n"), so a count the rest
+  // of the file cannot hold is refused before anything is allocated for it.
+  in.clear (); // a file that ends right after this line has set eof
+  const std::streampos here = in.tellg ();
+  in.seekg (0, std::ios::end);
+  const auto rest = static_cast<unsigned long long> (in.tellg () - here);
+  in.seekg (here);
+  if (count > rest / 20)
+    return lineError (path, 2, std::to_string (count) + " shapes cannot fit in the " + std::to_string (rest) +
+                                   " bytes that follow");
+  return Status::success ();
+}
+
+namespace {
+
+Status
+readPoint (LineReader& reader, WeightedPoint& p)
+{
+  std::string line, word;
+  if (!reader.next (line) || !(std::istringstream (line) >> word >> p.position.x () >> p.position.y () >> p.position.z () >> p.weight) ||
+      word != "p")
+    return reader.error ("expected 'p X Y Z WEIGHT'");
+  if (!p.position.allFinite () || p.position.cwiseAbs ().maxCoeff () > kLargestSignatureCoordinate)
+    return reader.error ("coordinates must be finite numbers of at most 1e9 in size");
+  if (!(p.weight >= 0.0 && p.weight <= 1.0))
+    return reader.error ("the weight must be a number in [0, 1]");
+  return Status::success ();
+}
+
+Status
+readPart (LineReader& reader, PartDescription& p)
+{
+  std::string line, word;
+  if (!reader.next (line) || !(std::istringstream (line) >> word >> p.weight >> p.thickness >> p.extent >> p.middle_ratio >>
+                               p.smallest_ratio >> p.offset) ||
+      word != "q")
+    return reader.error ("expected 'q WEIGHT THICKNESS EXTENT MIDDLE SMALLEST OFFSET'");
+  return Status::success ();
+}
+
+Status
+readDistribution (LineReader& reader, const char* tag, Distribution& bins)
+{
+  std::string line, word;
+  std::istringstream fields;
+  if (reader.next (line))
+    fields.str (line);
+  bool ok = static_cast<bool> (fields >> word) && word == tag;
+  for (double& v : bins)
+    ok = ok && static_cast<bool> (fields >> v);
+  if (!ok)
+    return reader.error (std::string ("expected '") + tag + "' and " + std::to_string (kDistributionBins) + " numbers");
+  return Status::success ();
+}
+
+} // namespace
+
+Status
+readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
+{
+  std::string line, word;
+  if (!reader.next (line))
+    return Status::error (reader.path + ": ends after " + std::to_string (s) + " of " + std::to_string (count) + " shapes");
+  std::istringstream head (line);
+  std::size_t points = 0, parts = 0;
+  Signature& sig = e.signature;
+  if (!(head >> word >> e.label >> sig.dimension >> sig.unit >> sig.interior_volume >> sig.significance >> points >> parts) ||
+      word != "shape" || (sig.dimension != 2 && sig.dimension != 3) || points > 100000 || parts > kMaxParts ||
+      !std::isfinite (sig.unit) || !std::isfinite (sig.interior_volume))
+    return reader.error ("expected 'shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS NAME'");
+  std::getline (head >> std::ws, e.name);
+  if (e.name.empty ())
+    return reader.error ("shape without a name");
+  const std::size_t shape_line = reader.number;
+  sig.points.resize (points);
+  for (WeightedPoint& p : sig.points)
+    if (const Status read = readPoint (reader, p); !read)
+      return read;
+  sig.description.parts.resize (parts);
+  for (PartDescription& p : sig.description.parts)
+    if (const Status read = readPart (reader, p); !read)
+      return read;
+  if (parts > 0)
+    for (const auto& [tag, bins] : {std::pair<const char*, Distribution*> ("t", &sig.description.thickness),
+                                    {"i", &sig.description.inner_distance}, {"s", &sig.description.solid_distance}})
+      if (const Status read = readDistribution (reader, tag, *bins); !read)
+        return read;
+  if (const Status checked = checkSignature (sig); !checked)
+    return lineError (reader.path, shape_line, "shape '" + e.name + "': " + checked.message);
+  return Status::success ();
+}
+
+void
+writeShape (std::ostream& out, const ShapeEntry& e)
+{
+  const Signature& s = e.signature;
+  const ShapeDescription& d = s.description;
+  out << "shape " << (e.label.empty () ? "-" : e.label) << " " << s.dimension << " " << s.unit << " " << s.interior_volume << " "
+      << s.significance << " " << s.points.size () << " " << d.parts.size () << " " << e.name << "\n";
+  for (const auto& p : s.points)
+    out << "p " << p.position.x () << " " << p.position.y () << " " << p.position.z () << " " << p.weight << "\n";
+  for (const auto& p : d.parts)
+    out << "q " << p.weight << " " << p.thickness << " " << p.extent << " " << p.middle_ratio << " " << p.smallest_ratio << " "
+        << p.offset << "\n";
+  if (d.parts.empty ())
+    return;
+  for (const auto& [tag, bins] : {std::pair<const char*, const Distribution*> ("t", &d.thickness),
+                                  {"i", &d.inner_distance}, {"s", &d.solid_distance}})
+  {
+    out << tag;
+    for (double v : *bins)
+      out << " " << v;
+    out << "\n";
+  }
+}
+void
+writeDatabaseHeader (std::ostream& out, std::size_t count)
+{
+  out << kMagic << " " << kDatabaseVersion << "\nshapes " << count << "\n" << std::setprecision (17);
+}
+
+} // namespace pcl_flowseg

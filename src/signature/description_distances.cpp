@@ -1,0 +1,98 @@
+/*
+ * pcl_flowseg - distances between shape descriptions: parts by earth mover's distance,
+ * distributions by L1 or chi-square, and their weighted sum.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "description_distances.h"
+
+#include "transport_distance.h"
+
+#include <cmath>
+
+namespace pcl_flowseg {
+
+namespace {
+
+double
+l1Distance (const Distribution& a, const Distribution& b)
+{
+  double sum = 0.0;
+  for (std::size_t k = 0; k < kDistributionBins; ++k)
+    sum += std::abs (a[k] - b[k]);
+  return sum;
+}
+
+double
+chiSquareDistance (const Distribution& a, const Distribution& b)
+{
+  double sum = 0.0;
+  for (std::size_t k = 0; k < kDistributionBins; ++k)
+    if (a[k] + b[k] > 0.0)
+      sum += (a[k] - b[k]) * (a[k] - b[k]) / (a[k] + b[k]);
+  return sum;
+}
+
+} // namespace
+
+Eigen::Matrix<double, 6, 1>
+partPoint (const PartDescription& p)
+{
+  const PartAttributeWeights& w = kPartAttributeWeights;
+  Eigen::Matrix<double, 6, 1> x;
+  x << w.thickness * std::log (p.thickness), w.extent * std::log (p.extent), w.middle_ratio * p.middle_ratio,
+      w.smallest_ratio * p.smallest_ratio, w.weight * std::log (p.weight), w.offset * p.offset;
+  return x;
+}
+
+double
+partDistance (const ShapeDescription& a, const ShapeDescription& b)
+{
+  std::vector<double> wa, wb;
+  std::vector<Eigen::Matrix<double, 6, 1>> pa, pb;
+  for (const PartDescription& p : a.parts)
+  {
+    wa.push_back (p.weight);
+    pa.push_back (partPoint (p));
+  }
+  for (const PartDescription& p : b.parts)
+  {
+    wb.push_back (p.weight);
+    pb.push_back (partPoint (p));
+  }
+  Eigen::MatrixXd cost (static_cast<Eigen::Index> (pa.size ()), static_cast<Eigen::Index> (pb.size ()));
+  for (std::size_t i = 0; i < pa.size (); ++i)
+    for (std::size_t j = 0; j < pb.size (); ++j)
+      cost (static_cast<Eigen::Index> (i), static_cast<Eigen::Index> (j)) = (pa[i] - pb[j]).norm ();
+  return transportDistance (wa, wb, cost);
+}
+
+double
+descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeDescription& b, int dimension)
+{
+  switch (method)
+  {
+  case MatchMethod::Parts:
+    return partDistance (a, b);
+  case MatchMethod::Thickness:
+    return l1Distance (a.thickness, b.thickness);
+  case MatchMethod::InnerDistance:
+    return chiSquareDistance (a.inner_distance, b.inner_distance);
+  case MatchMethod::SolidDistance:
+    return l1Distance (a.solid_distance, b.solid_distance);
+  case MatchMethod::Paper:
+  case MatchMethod::Combined:
+    break;
+  }
+  const DescriptionWeights& w = dimension == 2 ? kCombinedWeights2d : kCombinedWeights3d;
+  double sum = 0.0;
+  const std::pair<double, MatchMethod> terms[] = {{w.parts, MatchMethod::Parts},
+                                                  {w.thickness, MatchMethod::Thickness},
+                                                  {w.inner_distance, MatchMethod::InnerDistance},
+                                                  {w.solid_distance, MatchMethod::SolidDistance}};
+  for (const auto& [weight, component] : terms)
+    if (weight > 0.0)
+      sum += weight * descriptionDistance (component, a, b, dimension);
+  return sum;
+}
+
+} // namespace pcl_flowseg

@@ -1,0 +1,29 @@
+/*
+ * pcl_flowseg - distances between shape descriptions, one per matching method (internal header).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/signature/shape_description.h>
+#include <pcl_flowseg/signature/match_method.h>
+
+#include <Eigen/Core>
+
+namespace pcl_flowseg {
+
+/** \brief A part as a point in the space where Euclidean distance compares parts: its attributes
+  * (logs of thickness, extent and weight) times kPartAttributeWeights. */
+Eigen::Matrix<double, 6, 1>
+partPoint (const PartDescription& part);
+
+/** \brief Earth mover's distance between the parts of \a a and \a b; moving a part onto another
+  * costs the weighted Euclidean distance of their attributes (kPartAttributeWeights). */
+double
+partDistance (const ShapeDescription& a, const ShapeDescription& b);
+
+/** \brief The distance of \a method (not MatchMethod::Paper) between two non-empty descriptions of
+  * shapes of dimension \a dimension. */
+double
+descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeDescription& b, int dimension);
+
+} // namespace pcl_flowseg

@@ -1,0 +1,263 @@
+/*
+ * pcl_flowseg - three distributions measured inside a shape: thickness, inner distances and solid
+ * distances between volume-weighted random interior cells.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "interior_distributions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+namespace pcl_flowseg {
+
+namespace {
+
+/** A small, portable generator (splitmix64): the same draws with every compiler and library. */
+class Draws
+{
+public:
+  /** Uniform in [0, 1). */
+  double next ()
+  {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return static_cast<double> ((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+  }
+
+private:
+  std::uint64_t state_ = 1;
+};
+
+/** kInteriorSamples interior cells drawn with probability proportional to their volume. The cells
+  * are put in an order that does not depend on the frame (by volume and circumradius, which
+  * rotation, translation and scale keep up to rounding), so that a moved copy of a sample draws
+  * the same cells: the description is then invariant, not only in distribution. */
+std::vector<int>
+drawInteriorCells (const FlowResult& result)
+{
+  std::vector<int> inside;
+  for (std::size_t i = 0; i < result.cells.size (); ++i)
+    if (result.cells[i].inside == 1)
+      inside.push_back (static_cast<int> (i));
+  std::sort (inside.begin (), inside.end (), [&] (int a, int b) {
+    const FlowCell& ca = result.cells[static_cast<std::size_t> (a)];
+    const FlowCell& cb = result.cells[static_cast<std::size_t> (b)];
+    if (ca.volume != cb.volume)
+      return ca.volume > cb.volume;
+    if (ca.squared_radius != cb.squared_radius)
+      return ca.squared_radius > cb.squared_radius;
+    return a < b;
+  });
+  std::vector<double> cumulative;
+  double total = 0.0;
+  for (int c : inside)
+  {
+    total += result.cells[static_cast<std::size_t> (c)].volume;
+    cumulative.push_back (total);
+  }
+  std::vector<int> drawn;
+  if (inside.empty ())
+    return drawn;
+  Draws draws;
+  for (std::size_t k = 0; k < kInteriorSamples; ++k)
+  {
+    const auto at = std::upper_bound (cumulative.begin (), cumulative.end (), draws.next () * total) - cumulative.begin ();
+    drawn.push_back (inside[std::min (static_cast<std::size_t> (at), inside.size () - 1)]);
+  }
+  return drawn;
+}
+
+/** Adds \a weight at \a value to a histogram over [low, high] (outside values go to the end bins). */
+void
+addToBins (Distribution& bins, double value, double low, double high, double weight = 1.0)
+{
+  const double at = (value - low) / (high - low) * static_cast<double> (kDistributionBins);
+  const double clamped = std::isnan (at) ? 0.0 : std::clamp (at, 0.0, static_cast<double> (kDistributionBins - 1));
+  bins[static_cast<std::size_t> (clamped)] += weight;
+}
+
+/** Divides by the total; an empty histogram becomes all mass in the first bin. */
+void
+normalise (Distribution& bins)
+{
+  double total = 0.0;
+  for (double v : bins)
+    total += v;
+  if (total <= 0.0)
+    bins[0] = total = 1.0;
+  for (double& v : bins)
+    v /= total;
+}
+
+/** The edges of the interior cells as a graph on the sample points (compressed rows): paths along
+  * them run through the interior, and unlike paths between cell centroids they do not zigzag
+  * across thin parts. */
+struct InteriorEdges
+{
+  std::vector<std::size_t> first; ///< edges of vertex v: [first[v], first[v + 1])
+  std::vector<int> to;
+  std::vector<double> length;
+
+  explicit InteriorEdges (const FlowResult& result)
+  {
+    std::vector<std::pair<int, int>> pairs;
+    for (const FlowCell& c : result.cells)
+      if (c.inside == 1)
+        for (int a = 0; a <= result.dimension; ++a)
+          for (int b = 0; b <= result.dimension; ++b)
+            if (a != b)
+              pairs.emplace_back (c.vertices[static_cast<std::size_t> (a)], c.vertices[static_cast<std::size_t> (b)]);
+    std::sort (pairs.begin (), pairs.end ());
+    pairs.erase (std::unique (pairs.begin (), pairs.end ()), pairs.end ());
+    first.assign (result.vertices.size () + 1, 0);
+    for (const auto& e : pairs)
+      ++first[static_cast<std::size_t> (e.first) + 1];
+    for (std::size_t v = 0; v < result.vertices.size (); ++v)
+      first[v + 1] += first[v];
+    for (const auto& e : pairs)
+    {
+      to.push_back (e.second);
+      length.push_back ((result.vertices[static_cast<std::size_t> (e.first)] - result.vertices[static_cast<std::size_t> (e.second)]).norm ());
+    }
+  }
+};
+
+/** Inner distances from the centroid of cell \a source: to each sample point by the shortest path
+  * through the interior edges (starting at the cell's corners), infinity where they do not reach. */
+void
+innerDistancesFrom (const FlowResult& result, const InteriorEdges& edges, int source, std::vector<double>& distance)
+{
+  using Entry = std::pair<double, int>;
+  std::fill (distance.begin (), distance.end (), std::numeric_limits<double>::infinity ());
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  const FlowCell& cell = result.cells[static_cast<std::size_t> (source)];
+  for (int k = 0; k <= result.dimension; ++k)
+  {
+    const int v = cell.vertices[static_cast<std::size_t> (k)];
+    distance[static_cast<std::size_t> (v)] = (result.vertices[static_cast<std::size_t> (v)] - cell.centroid).norm ();
+    queue.emplace (distance[static_cast<std::size_t> (v)], v);
+  }
+  while (!queue.empty ())
+  {
+    const auto [d, v] = queue.top ();
+    queue.pop ();
+    if (d > distance[static_cast<std::size_t> (v)])
+      continue;
+    for (std::size_t e = edges.first[static_cast<std::size_t> (v)]; e < edges.first[static_cast<std::size_t> (v) + 1]; ++e)
+    {
+      const double through = d + edges.length[e];
+      if (through < distance[static_cast<std::size_t> (edges.to[e])])
+      {
+        distance[static_cast<std::size_t> (edges.to[e])] = through;
+        queue.emplace (through, edges.to[e]);
+      }
+    }
+  }
+}
+
+/** The inner distance to the centroid of cell \a target, through its nearest corner by path. */
+double
+innerDistanceTo (const FlowResult& result, const std::vector<double>& distance, int target)
+{
+  const FlowCell& cell = result.cells[static_cast<std::size_t> (target)];
+  double best = std::numeric_limits<double>::infinity ();
+  for (int k = 0; k <= result.dimension; ++k)
+  {
+    const int v = cell.vertices[static_cast<std::size_t> (k)];
+    best = std::min (best, distance[static_cast<std::size_t> (v)] + (result.vertices[static_cast<std::size_t> (v)] - cell.centroid).norm ());
+  }
+  return best;
+}
+
+/** Sources spread over the drawn cells (farthest points by centroid distance, from the first
+  * drawn), each weighted by the share of drawn cells nearest to it: pairs from a few sources then
+  * stand for all pairs with far less variance than from the first few drawn (a dumbbell's sources
+  * fall into both bulbs in their proportion). */
+void
+spreadSources (const FlowResult& result, const std::vector<int>& drawn, std::vector<int>& sources, std::vector<double>& weights)
+{
+  const auto centroid = [&] (std::size_t k) -> const Eigen::Vector3d& { return result.cells[static_cast<std::size_t> (drawn[k])].centroid; };
+  std::vector<double> nearest (drawn.size (), std::numeric_limits<double>::infinity ());
+  std::vector<std::size_t> owner (drawn.size (), 0);
+  std::size_t next = 0;
+  for (std::size_t s = 0; s < std::min (kDistanceSources, drawn.size ()); ++s)
+  {
+    sources.push_back (drawn[next]);
+    const Eigen::Vector3d from = centroid (next);
+    std::size_t farthest = 0;
+    for (std::size_t k = 0; k < drawn.size (); ++k)
+    {
+      const double d = (centroid (k) - from).norm ();
+      if (d < nearest[k])
+      {
+        nearest[k] = d;
+        owner[k] = s;
+      }
+      if (nearest[k] > nearest[farthest])
+        farthest = k;
+    }
+    next = farthest;
+  }
+  weights.assign (sources.size (), 0.0);
+  for (std::size_t k = 0; k < drawn.size (); ++k)
+    weights[owner[k]] += 1.0 / static_cast<double> (drawn.size ());
+}
+
+void
+measureDistances (const FlowResult& result, const std::vector<int>& drawn, double unit, ShapeDescription& description)
+{
+  const InteriorEdges edges (result);
+  std::vector<int> sources;
+  std::vector<double> weights, distance (result.vertices.size ()), solid, solid_weight;
+  spreadSources (result, drawn, sources, weights);
+  for (std::size_t s = 0; s < sources.size (); ++s)
+  {
+    innerDistancesFrom (result, edges, sources[s], distance);
+    const Eigen::Vector3d& from = result.cells[static_cast<std::size_t> (sources[s])].centroid;
+    for (int target : drawn)
+    {
+      const double straight = (result.cells[static_cast<std::size_t> (target)].centroid - from).norm ();
+      // Where the interior falls apart (a gap in the labelling of a thin neck) the straight
+      // distance stands in: dropping the pair would change the distribution far more.
+      double inner = target == sources[s] ? 0.0 : innerDistanceTo (result, distance, target);
+      if (!std::isfinite (inner))
+        inner = straight;
+      if (inner > 0.0)
+        addToBins (description.inner_distance, std::log (inner / unit), kInnerLogLow, kInnerLogHigh, weights[s]);
+      solid.push_back (straight);
+      solid_weight.push_back (weights[s]);
+    }
+  }
+  double mean = 0.0, total = 0.0;
+  for (std::size_t k = 0; k < solid.size (); ++k)
+  {
+    mean += solid_weight[k] * solid[k];
+    total += solid_weight[k];
+  }
+  mean = total > 0.0 ? mean / total : 0.0;
+  for (std::size_t k = 0; k < solid.size (); ++k)
+    addToBins (description.solid_distance, mean > 0.0 ? solid[k] / mean : 0.0, 0.0, kSolidHigh, solid_weight[k]);
+}
+
+} // namespace
+
+void
+describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, ShapeDescription& description)
+{
+  const std::vector<int> drawn = drawInteriorCells (result);
+  for (int c : drawn)
+    addToBins (description.thickness, 0.5 * std::log (result.cells[static_cast<std::size_t> (c)].squared_radius) - std::log (frame.unit),
+               kThicknessLogLow, kThicknessLogHigh);
+  measureDistances (result, drawn, frame.unit, description);
+  normalise (description.thickness);
+  normalise (description.inner_distance);
+  normalise (description.solid_distance);
+}
+
+} // namespace pcl_flowseg

@@ -1,0 +1,20 @@
+/*
+ * pcl_flowseg - thickness, inner-distance and solid-distance distributions of a shape's interior
+ * (internal header).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include "interior_frame.h"
+
+#include <pcl_flowseg/common/flow_result.h>
+#include <pcl_flowseg/signature/shape_description.h>
+
+namespace pcl_flowseg {
+
+/** \brief Fills the three distributions of \a description from kInteriorSamples interior cells
+  * drawn by volume with a fixed seed. */
+void
+describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, ShapeDescription& description);
+
+} // namespace pcl_flowseg

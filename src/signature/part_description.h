@@ -1,0 +1,20 @@
+/*
+ * pcl_flowseg - the interior features of a shape as parts with attributes (internal header).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include "interior_frame.h"
+
+#include <pcl_flowseg/common/flow_result.h>
+#include <pcl_flowseg/signature/shape_description.h>
+
+#include <vector>
+
+namespace pcl_flowseg {
+
+/** \brief The parts of ShapeDescription::parts, measured on the cells of each described segment. */
+std::vector<PartDescription>
+describeParts (const FlowResult& result, const InteriorFrame& frame);
+
+} // namespace pcl_flowseg

@@ -1,0 +1,79 @@
+/*
+ * pcl_flowseg - checks of shape descriptions.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include <pcl_flowseg/signature/shape_description.h>
+
+#include <cmath>
+#include <string>
+
+namespace pcl_flowseg {
+
+namespace {
+
+constexpr double kLargestLength = 1e9; ///< in the unit: larger means a broken description
+
+Status
+checkDistribution (const Distribution& d, const char* name)
+{
+  double sum = 0.0;
+  for (double v : d)
+  {
+    if (!(v >= 0.0 && v <= 1.0))
+      return Status::error (std::string ("the ") + name + " distribution has an entry outside [0, 1]");
+    sum += v;
+  }
+  if (std::abs (sum - 1.0) > 1e-9)
+    return Status::error (std::string ("the ") + name + " distribution sums to " + std::to_string (sum) + ", not 1");
+  return Status::success ();
+}
+
+Status
+checkPart (const PartDescription& p, std::size_t k)
+{
+  const std::string which = "part " + std::to_string (k + 1);
+  if (!(p.weight > 0.0 && p.weight <= 1.0))
+    return Status::error (which + " has a weight outside (0, 1]");
+  if (!(p.thickness > 0.0 && p.thickness <= kLargestLength) || !(p.extent > 0.0 && p.extent <= kLargestLength) ||
+      !(p.offset >= 0.0 && p.offset <= kLargestLength))
+    return Status::error (which + " has a thickness, extent or offset that is not a finite length");
+  if (!(p.middle_ratio >= 0.0 && p.middle_ratio <= 1.0) || !(p.smallest_ratio >= 0.0 && p.smallest_ratio <= 1.0))
+    return Status::error (which + " has an axis ratio outside [0, 1]");
+  return Status::success ();
+}
+
+} // namespace
+
+Status
+checkShapeDescription (const ShapeDescription& description)
+{
+  const ShapeDescription& d = description;
+  if (d.parts.empty ())
+  {
+    for (const Distribution* h : {&d.thickness, &d.inner_distance, &d.solid_distance})
+      for (double v : *h)
+        if (v != 0.0)
+          return Status::error ("a description without parts must have empty distributions");
+    return Status::success ();
+  }
+  if (d.parts.size () > kMaxParts)
+    return Status::error ("more than " + std::to_string (kMaxParts) + " parts");
+  double total = 0.0;
+  for (std::size_t k = 0; k < d.parts.size (); ++k)
+  {
+    if (const Status s = checkPart (d.parts[k], k); !s)
+      return s;
+    if (k > 0 && d.parts[k].weight > d.parts[k - 1].weight)
+      return Status::error ("the parts are not ordered by decreasing weight");
+    total += d.parts[k].weight;
+  }
+  if (std::abs (total - 1.0) > 1e-9)
+    return Status::error ("the part weights sum to " + std::to_string (total) + ", not 1");
+  for (const auto& [h, name] : {std::pair<const Distribution*, const char*> (&d.thickness, "thickness"),
+                                {&d.inner_distance, "inner-distance"}, {&d.solid_distance, "solid-distance"}})
+    if (const Status s = checkDistribution (*h, name); !s)
+      return s;
+  return Status::success ();
+}
+
+} // namespace pcl_flowseg

@@ -1,0 +1,294 @@
+/*
+ * Shape descriptions (parts and interior distributions), the earth mover's distance between parts,
+ * the description matching methods and their storage in the database.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "test_support.h"
+
+#include "signature/transport_distance.h"
+
+#include <pcl_flowseg/signature/describe_shape.h>
+#include <pcl_flowseg/signature/signature_database.h>
+#include <pcl_flowseg/signature/signature_matcher.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <random>
+#include <unistd.h>
+
+using namespace pcl_flowseg;
+using V = Eigen::Vector3d;
+
+namespace {
+
+Signature
+signatureOf (const std::vector<V>& pts)
+{
+  FlowResult r;
+  EXPECT_TRUE (runFlowSegmentation (pts, FlowParameters (), r).ok);
+  Signature s;
+  EXPECT_TRUE (signatureFromSegmentation (r, kDefaultSignificance, s).ok);
+  return s;
+}
+
+/** A resampled copy of a sample shape, rotated, mirrored, scaled and moved. */
+std::vector<V>
+movedCopy (const std::string& name, std::size_t n)
+{
+  const bool planar = name.find ("2d") != std::string::npos;
+  const Eigen::Matrix3d r = Eigen::AngleAxisd (1.1, planar ? V (0, 0, 1) : V (1, -2, 0.5).normalized ()).toRotationMatrix ();
+  std::vector<V> out;
+  for (V p : flowseg_test::shapeSample (name, n, 99))
+  {
+    p.y () = -p.y ();
+    out.push_back (3.5 * (r * p) + V (4, -7, planar ? 0 : 2));
+  }
+  return out;
+}
+
+double
+matchWith (MatchMethod method, const Signature& a, const Signature& b)
+{
+  pcl::SignatureMatcher matcher;
+  matcher.setMethod (method);
+  return matcher.match (a, b).similarity;
+}
+
+} // namespace
+
+TEST (TransportDistance, EqualWeightsCostTheBestPermutation)
+{
+  std::mt19937 random (3);
+  std::uniform_real_distribution<double> uniform (0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const int n = 5;
+    Eigen::MatrixXd cost (n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        cost (i, j) = uniform (random);
+    std::vector<int> order (n);
+    std::iota (order.begin (), order.end (), 0);
+    double best = 1e300;
+    do
+    {
+      double sum = 0.0;
+      for (int i = 0; i < n; ++i)
+        sum += cost (i, order[static_cast<std::size_t> (i)]) / n;
+      best = std::min (best, sum);
+    } while (std::next_permutation (order.begin (), order.end ()));
+    const std::vector<double> w (n, 1.0 / n);
+    EXPECT_NEAR (transportDistance (w, w, cost), best, 1e-12) << trial;
+  }
+}
+
+TEST (TransportDistance, SplitsAndUnequalTotals)
+{
+  Eigen::MatrixXd cost (1, 3);
+  cost << 1.0, 2.0, 4.0;
+  // One unit spread over three: every destination gets its share.
+  EXPECT_NEAR (transportDistance ({1.0}, {0.5, 0.25, 0.25}, cost), 0.5 * 1 + 0.25 * 2 + 0.25 * 4, 1e-12);
+  // The destination weights are scaled to the source total.
+  EXPECT_NEAR (transportDistance ({2.0}, {1.0, 1.0, 2.0}, cost), 0.5 * 1 + 0.5 * 2 + 1.0 * 4, 1e-12);
+  // A cheap route that must be undone: 2 x 2, the greedy first choice (0 -> 0) is wrong.
+  Eigen::MatrixXd c2 (2, 2);
+  c2 << 0.0, 1.0, 0.1, 10.0;
+  EXPECT_NEAR (transportDistance ({0.5, 0.5}, {0.5, 0.5}, c2), 0.5 * 1.0 + 0.5 * 0.1, 1e-12);
+  EXPECT_EQ (transportDistance ({}, {1.0}, Eigen::MatrixXd (0, 1)), 0.0);
+}
+
+TEST (ShapeDescription, PartsAndDistributionsOfTheAnimal)
+{
+  FlowResult r;
+  ASSERT_TRUE (runFlowSegmentation (flowseg_test::shapeSample ("animal3d", 4000), FlowParameters (), r).ok);
+  ShapeDescription d;
+  ASSERT_TRUE (describeShape (r, d).ok);
+  EXPECT_TRUE (checkShapeDescription (d).ok);
+  ASSERT_GE (d.parts.size (), 6u); // body, head, four legs
+  EXPECT_LE (d.parts.size (), kMaxParts);
+  EXPECT_GT (d.parts[0].weight, 0.4); // the body
+  // The body is thicker than the thinnest part (a leg or the tail) and lies nearest the centre.
+  const auto thinnest = std::min_element (d.parts.begin (), d.parts.end (),
+                                          [] (const PartDescription& a, const PartDescription& b) { return a.thickness < b.thickness; });
+  EXPECT_GT (d.parts[0].thickness, 1.5 * thinnest->thickness);
+  for (std::size_t k = 1; k < d.parts.size (); ++k)
+    EXPECT_LT (d.parts[0].offset, d.parts[k].offset) << k;
+  // The same result describes the same way: the sampling seed is fixed.
+  ShapeDescription again;
+  ASSERT_TRUE (describeShape (r, again).ok);
+  EXPECT_EQ (again.thickness, d.thickness);
+  EXPECT_EQ (again.inner_distance, d.inner_distance);
+  ASSERT_EQ (again.parts.size (), d.parts.size ());
+  EXPECT_EQ (again.parts.back ().extent, d.parts.back ().extent);
+}
+
+namespace {
+
+/** Boundary samples of a 2D bar of \a length and width 0.6, bent along a circular arc through
+  * \a bend radians (0: straight). */
+std::vector<V>
+barSample (double length, double bend)
+{
+  std::vector<V> pts;
+  const double half_width = 0.1;
+  const auto place = [&] (double s, double t) { // s along the bar, t across it
+    if (bend == 0.0)
+      return V (s, t, 0.0);
+    const double radius = length / bend, angle = bend * s / length;
+    return V ((radius + t) * std::cos (angle), (radius + t) * std::sin (angle), 0.0);
+  };
+  const int steps = static_cast<int> (100 * length);
+  for (int k = 0; k <= steps; ++k)
+    for (double t : {-half_width, half_width})
+      pts.push_back (place (length * k / steps, t));
+  for (int k = 1; k < 8; ++k)
+  {
+    const double t = -half_width + 2.0 * half_width * k / 8.0;
+    pts.push_back (place (0.0, t));
+    pts.push_back (place (length, t));
+  }
+  return pts;
+}
+
+} // namespace
+
+TEST (ShapeDescription, BendingABarKeepsItsInnerDistances)
+{
+  // Bending a bar into a half circle changes its straight distances much more than its inner ones.
+  const ShapeDescription bar = signatureOf (barSample (10.0, 0.0)).description;
+  const ShapeDescription bent = signatureOf (barSample (10.0, 3.14159265358979)).description;
+  const auto l1 = [] (const Distribution& a, const Distribution& b) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < kDistributionBins; ++k)
+      sum += std::abs (a[k] - b[k]);
+    return sum;
+  };
+  const double inner = l1 (bar.inner_distance, bent.inner_distance), solid = l1 (bar.solid_distance, bent.solid_distance);
+  EXPECT_LT (inner, 0.5 * solid) << "inner " << inner << ", solid " << solid;
+}
+
+class DescriptionInvariance : public ::testing::TestWithParam<const char*> {};
+
+TEST_P (DescriptionInvariance, ATransformedResampledCopyIsTheMostSimilar)
+{
+  const std::string name = GetParam ();
+  const std::size_t n = name.find ("2d") != std::string::npos ? 1500 : 4000;
+  const Signature query = signatureOf (flowseg_test::shapeSample (name, n, 1));
+  const Signature copy = signatureOf (movedCopy (name, n));
+  for (MatchMethod method : kMatchMethods)
+  {
+    if (method == MatchMethod::Paper)
+      continue;
+    EXPECT_EQ (matchWith (method, query, copy), matchWith (method, copy, query)) << matchMethodName (method);
+    EXPECT_NEAR (matchWith (method, query, query), 1.0, 1e-12) << matchMethodName (method);
+  }
+  const double self = matchWith (MatchMethod::Combined, query, copy);
+  EXPECT_GT (self, 0.3) << name;
+  for (const auto& other : sampleShapes ())
+  {
+    if (other.name == name || (other.dimension == 2) != (name.find ("2d") != std::string::npos))
+      continue;
+    const Signature o = signatureOf (sampleBoundary (other, n, 5));
+    EXPECT_LT (matchWith (MatchMethod::Combined, query, o), self) << name << " vs " << other.name;
+  }
+}
+
+TEST_P (DescriptionInvariance, ARescaledCopyIsDescribedExactlyTheSame)
+{
+  // Scaling by a power of two changes no rounding: the triangulation, the segmentation and the
+  // drawn cells (ordered by volume, not by place) are the same, so is the description.
+  const std::string name = GetParam ();
+  const std::vector<V> pts = flowseg_test::shapeSample (name, name.find ("2d") != std::string::npos ? 1500 : 4000, 1);
+  std::vector<V> scaled;
+  for (const V& p : pts)
+    scaled.push_back (0.25 * p);
+  const ShapeDescription a = signatureOf (pts).description, b = signatureOf (scaled).description;
+  ASSERT_EQ (a.parts.size (), b.parts.size ());
+  for (std::size_t k = 0; k < a.parts.size (); ++k)
+  {
+    EXPECT_NEAR (a.parts[k].weight, b.parts[k].weight, 1e-12);
+    EXPECT_NEAR (a.parts[k].thickness, b.parts[k].thickness, 1e-12);
+    EXPECT_NEAR (a.parts[k].offset, b.parts[k].offset, 1e-12);
+  }
+  EXPECT_EQ (a.thickness, b.thickness);
+  EXPECT_EQ (a.inner_distance, b.inner_distance);
+  EXPECT_EQ (a.solid_distance, b.solid_distance);
+}
+
+INSTANTIATE_TEST_SUITE_P (Shapes, DescriptionInvariance,
+                          ::testing::Values ("star2d", "hand2d", "dumbbell3d", "snowman3d", "animal3d"));
+
+TEST (DescriptionMatch, RefusesWhatItCannotCompare)
+{
+  const Signature planar = signatureOf (flowseg_test::shapeSample ("star2d", 800));
+  const Signature solid = signatureOf (flowseg_test::shapeSample ("snowman3d", 1500));
+  pcl::SignatureMatcher matcher;
+  const auto mixed = matcher.match (planar, solid);
+  EXPECT_FALSE (mixed.status);
+  EXPECT_LT (mixed.similarity, -1e300);
+  Signature bare = solid;
+  bare.description = ShapeDescription ();
+  const auto undescribed = matcher.match (solid, bare);
+  EXPECT_FALSE (undescribed.status);
+  EXPECT_NE (undescribed.status.message.find ("description"), std::string::npos) << undescribed.status.message;
+  matcher.setMethod (MatchMethod::Paper); // the paper's method needs none
+  EXPECT_TRUE (matcher.match (solid, bare).status);
+  MatchMethod parsed = MatchMethod::Paper;
+  EXPECT_TRUE (parseMatchMethod ("inner", parsed));
+  EXPECT_EQ (parsed, MatchMethod::InnerDistance);
+  EXPECT_FALSE (parseMatchMethod ("d2", parsed));
+}
+
+TEST (ShapeDescription, BrokenDescriptionsAreRefused)
+{
+  const Signature s = signatureOf (flowseg_test::shapeSample ("animal3d", 2000));
+  ASSERT_TRUE (checkSignature (s).ok);
+  auto refused = [&] (const std::function<void (ShapeDescription&)>& breakIt, const std::string& expected) {
+    Signature broken = s;
+    breakIt (broken.description);
+    const Status st = checkSignature (broken);
+    EXPECT_FALSE (st.ok) << expected;
+    EXPECT_NE (st.message.find (expected), std::string::npos) << st.message;
+  };
+  refused ([] (ShapeDescription& d) { std::swap (d.parts[0], d.parts[1]); }, "decreasing weight");
+  refused ([] (ShapeDescription& d) { d.parts[1].middle_ratio = 1.5; }, "axis ratio");
+  refused ([] (ShapeDescription& d) { d.parts[0].thickness = std::nan (""); }, "thickness");
+  refused ([] (ShapeDescription& d) { d.inner_distance[3] += 0.1; }, "inner-distance distribution sums");
+  refused ([] (ShapeDescription& d) { d.parts.clear (); }, "without parts");
+}
+
+TEST (ShapeDescription, TheDatabaseKeepsDescriptionsExactlyAndRanksByThem)
+{
+  SignatureDatabase db;
+  for (const char* name : {"animal3d", "snowman3d", "dumbbell3d"})
+  {
+    ShapeEntry e;
+    e.name = name;
+    e.label = name;
+    e.signature = signatureOf (flowseg_test::shapeSample (name, 3000, 2));
+    db.add (e);
+  }
+  const std::string path = "/tmp/flowseg_description_test_" + std::to_string (::getpid ()) + ".db";
+  ASSERT_TRUE (db.save (path).ok);
+  SignatureDatabase back;
+  ASSERT_TRUE (back.load (path).ok);
+  std::remove (path.c_str ());
+  ASSERT_EQ (back.size (), 3u);
+  const ShapeDescription& before = db.entries ()[0].signature.description;
+  const ShapeDescription& after = back.entries ()[0].signature.description;
+  ASSERT_EQ (after.parts.size (), before.parts.size ());
+  EXPECT_EQ (after.parts[1].offset, before.parts[1].offset);
+  EXPECT_EQ (after.solid_distance, before.solid_distance);
+  const Signature query = signatureOf (movedCopy ("animal3d", 3000));
+  for (std::size_t candidates : {0u, 1u})
+  {
+    const auto hits = back.query (query, 3, pcl::SignatureMatcher (), candidates);
+    ASSERT_EQ (hits.size (), 3u);
+    EXPECT_EQ (back.entries ()[hits[0].entry].name, "animal3d") << candidates;
+    EXPECT_TRUE (hits[0].aligned);
+    EXPECT_EQ (hits[0].similarity, matchWith (MatchMethod::Combined, query, back.entries ()[hits[0].entry].signature));
+  }
+}
