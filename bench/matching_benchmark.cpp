@@ -5,9 +5,11 @@
  * 1. Real signatures (the TOSCA point samples, when ../shared is there): leave-one-out retrieval
  *    (nearest neighbour, first tier) with every stored shape aligned and with the candidate index
  *    at several candidate counts, and the time per query.
- * 2. Databases of 300 and 100,000 signatures made from those (or from generated shapes) by random
- *    rotations, mirroring, position jitter and weight changes: time per query with the default
- *    candidates, and with every shape aligned where that finishes in reasonable time.
+ * 2. Databases of 1,000 to 100,000 signatures made from those (or from generated shapes) by random
+ *    rotations, mirroring, position jitter, weight and description changes: the share of the exact
+ *    top 10 (every stored shape compared) that the candidate index finds, per candidate count.
+ * 3. Time per query with the default candidates, and with every shape compared where that
+ *    finishes in reasonable time.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <pcl_flowseg/evaluation/shape_generator.h>
@@ -106,6 +108,37 @@ generatedSignatures (std::size_t count)
   return out;
 }
 
+/** Changes a description as sampling the shape again would: part attributes and weights by up
+  * to 10%, each distribution bin by Gaussian noise of 10% of its value (then renormalised). */
+void
+perturbDescription (pcl_flowseg::ShapeDescription& d, std::mt19937& rng)
+{
+  if (d.empty ())
+    return;
+  std::uniform_real_distribution<double> factor (0.9, 1.1);
+  std::normal_distribution<double> gauss (0.0, 0.1);
+  double total = 0.0;
+  for (auto& p : d.parts)
+  {
+    for (double* v : {&p.weight, &p.thickness, &p.extent, &p.offset})
+      *v *= factor (rng);
+    p.middle_ratio = std::min (1.0, p.middle_ratio * factor (rng));
+    p.smallest_ratio = std::min (1.0, p.smallest_ratio * factor (rng));
+    total += p.weight;
+  }
+  for (auto& p : d.parts)
+    p.weight /= total;
+  std::stable_sort (d.parts.begin (), d.parts.end (), [] (const auto& a, const auto& b) { return a.weight > b.weight; });
+  for (pcl_flowseg::Distribution* h : {&d.thickness, &d.inner_distance, &d.solid_distance})
+  {
+    double sum = 0.0;
+    for (double& v : *h)
+      sum += (v = std::max (0.0, v * (1.0 + gauss (rng))));
+    for (double& v : *h)
+      v /= sum;
+  }
+}
+
 /** A copy of \a s turned by a random rotation (mirrored half of the time), its points moved by
   * Gaussian jitter and its weights changed by up to 10%: the same shape, sampled again. */
 Signature
@@ -130,6 +163,7 @@ variant (const Signature& s, std::mt19937& rng)
   for (auto& p : v.points)
     p.weight /= total;
   std::stable_sort (v.points.begin (), v.points.end (), [] (const auto& a, const auto& b) { return a.weight > b.weight; });
+  perturbDescription (v.description, rng);
   return v;
 }
 
@@ -185,24 +219,69 @@ queryTime (const std::vector<Labelled>& base, std::size_t size, std::size_t cand
   return msSince (start) / queries;
 }
 
+/** A database of \a size variants of \a base (the first copy of each base shape unchanged). */
+pcl_flowseg::SignatureDatabase
+variantDatabase (const std::vector<Labelled>& base, std::size_t size, std::mt19937& rng)
+{
+  pcl_flowseg::SignatureDatabase db;
+  for (std::size_t i = 0; i < size; ++i)
+  {
+    const Labelled& b = base[i % base.size ()];
+    db.add (pcl_flowseg::ShapeEntry{"shape" + std::to_string (i), b.label, i < base.size () ? b.signature : variant (b.signature, rng)});
+  }
+  return db;
+}
+
+/** Share of the exact top 10 (every stored shape compared) that the candidate index finds, and
+  * the time per query, against \a size stored variants of \a base. */
+void
+candidateRecall (const std::vector<Labelled>& base, std::size_t size, std::size_t candidates, int queries,
+                 const pcl::SignatureMatcher& matcher)
+{
+  std::mt19937 rng (13);
+  pcl_flowseg::SignatureDatabase db = variantDatabase (base, size, rng);
+  db.query (base[0].signature, 1, matcher, candidates); // builds the candidate index
+  double found = 0.0, ms = 0.0;
+  for (int q = 0; q < queries; ++q)
+  {
+    const Signature query = variant (base[static_cast<std::size_t> (q) % base.size ()].signature, rng);
+    const auto start = Clock::now ();
+    const auto fast = db.query (query, 10, matcher, candidates);
+    ms += msSince (start);
+    const auto exact = db.query (query, 10, matcher, 0);
+    for (const auto& e : exact)
+      found += std::any_of (fast.begin (), fast.end (), [&] (const pcl_flowseg::QueryHit& h) { return h.entry == e.entry; }) ? 0.1 : 0.0;
+  }
+  std::printf ("| %zu | %zu | %.3f | %.3f | %d |\n", size, candidates, found / queries, ms / queries, queries);
+  std::fflush (stdout);
+}
+
 } // namespace
 
 int
 main (int argc, char** argv)
 {
   std::string dir = "../shared/data/tosca_points";
+  pcl::SignatureMatcher matcher;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
+    pcl_flowseg::MatchMethod method;
     if (a == "--shapes" && i + 1 < argc)
       dir = argv[++i];
+    else if (a == "--method" && i + 1 < argc && pcl_flowseg::parseMatchMethod (argv[i + 1], method))
+    {
+      matcher.setMethod (method);
+      ++i;
+    }
     else
     {
-      std::fprintf (stderr, "usage: flowseg_bench_matching [--shapes DIR (../shared/data/tosca_points; class = folder)]\n");
+      std::fprintf (stderr, "usage: flowseg_bench_matching [--shapes DIR (../shared/data/tosca_points; class = folder)]\n"
+                            "                              [--method M (flowseg, paper, parts, thickness, inner, solid; default flowseg)]\n");
       return 2;
     }
   }
-  const pcl::SignatureMatcher matcher;
+  std::printf ("method %s\n", pcl_flowseg::matchMethodName (matcher.getMethod ()));
   std::vector<Labelled> base = signaturesIn (dir);
   std::string source = dir;
   if (base.empty ())
@@ -225,6 +304,13 @@ main (int argc, char** argv)
   std::printf ("| candidates aligned | shapes | nearest neighbour | first tier | ms per query |\n|---|---|---|---|---|\n");
   for (std::size_t c : {std::size_t (0), std::size_t (8), std::size_t (16), std::size_t (24), std::size_t (32)})
     retrieval (base, c, matcher);
+
+  std::printf ("\nCandidate index: share of the exact top 10 found, against databases of re-sampled copies\n\n");
+  std::printf ("| stored signatures | candidates compared | exact top 10 found | ms per query | queries |\n|---|---|---|---|---|\n");
+  struct Recall { std::size_t size, candidates; int queries; };
+  for (const Recall& r : {Recall{1000, 24, 50}, Recall{1000, 200, 50}, Recall{10000, 200, 20}, Recall{10000, 1000, 20},
+                          Recall{100000, 200, 20}, Recall{100000, 1000, 20}})
+    candidateRecall (base, r.size, r.candidates, r.queries, matcher);
 
   std::printf ("\nQueries (top 10) against databases of randomly rotated, mirrored and jittered copies\n\n");
   std::printf ("| stored signatures | candidates aligned | ms per query | queries per second | index build ms |\n|---|---|---|---|---|\n");

@@ -24,15 +24,7 @@ using V = Eigen::Vector3d;
 
 namespace {
 
-Signature
-signatureOf (const std::vector<V>& pts)
-{
-  FlowResult r;
-  EXPECT_TRUE (runFlowSegmentation (pts, FlowParameters (), r).ok);
-  Signature s;
-  EXPECT_TRUE (signatureFromSegmentation (r, kDefaultSignificance, s).ok);
-  return s;
-}
+using flowseg_test::signatureOf;
 
 /** A resampled copy of a sample shape, rotated, mirrored, scaled and moved. */
 std::vector<V>

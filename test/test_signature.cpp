@@ -19,16 +19,7 @@ using V = Eigen::Vector3d;
 
 namespace {
 
-Signature
-signatureOf (const std::vector<V>& pts)
-{
-  FlowParameters params;
-  FlowResult r;
-  EXPECT_TRUE (runFlowSegmentation (pts, params, r).ok);
-  Signature s;
-  EXPECT_TRUE (signatureFromSegmentation (r, kDefaultSignificance, s).ok);
-  return s;
-}
+using flowseg_test::signatureOf;
 
 std::vector<V>
 transformed (const std::vector<V>& pts, double angle, const V& axis, double scale, bool mirror, const V& shift)

@@ -6,6 +6,7 @@
 
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/evaluation/shape_generator.h>
+#include <pcl_flowseg/signature/signature.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -20,6 +21,17 @@ namespace flowseg_test {
 
 /** The library's default merge group, for tests that vary one of its values. */
 constexpr pcl_flowseg::MergeParameters kDefaultMerge{};
+
+/** The signature (points and description) of a sample, with the default parameters. */
+inline pcl_flowseg::Signature
+signatureOf (const std::vector<Eigen::Vector3d>& pts)
+{
+  pcl_flowseg::FlowResult r;
+  EXPECT_TRUE (pcl_flowseg::runFlowSegmentation (pts, pcl_flowseg::FlowParameters (), r).ok);
+  pcl_flowseg::Signature s;
+  EXPECT_TRUE (pcl_flowseg::signatureFromSegmentation (r, pcl_flowseg::kDefaultSignificance, s).ok);
+  return s;
+}
 
 /** Boundary sample of one of the shipped procedural shapes. */
 inline std::vector<Eigen::Vector3d>

@@ -37,8 +37,10 @@ struct QueryHit
   * the Python module). */
 constexpr std::size_t kDefaultQueryResults = 10;
 
-/** \brief Default number of stored shapes aligned per query (SignatureDatabase::setCandidates). */
-constexpr std::size_t kDefaultCandidates = 24;
+/** \brief Default number of stored shapes compared in full per query (SignatureDatabase::setCandidates):
+  * enough for the candidate index to find the exact top 10 of the default method among 100,000
+  * stored shapes (docs/measurements.md, "Speed and memory"). */
+constexpr std::size_t kDefaultCandidates = 1000;
 
 /** \brief Signatures of many shapes, kept in one text file:
   *
