@@ -7,7 +7,9 @@
 
 #include "transport_distance.h"
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace pcl_flowseg {
 
@@ -45,8 +47,17 @@ partPoint (const PartDescription& p)
 }
 
 double
-partDistance (const ShapeDescription& a, const ShapeDescription& b)
+partDistance (const ShapeDescription& first, const ShapeDescription& second)
 {
+  // The transport is solved in one fixed order of the two part lists, so that rounding cannot make
+  // the distance from a to b differ from the distance from b to a.
+  const auto key = [] (const PartDescription& p) {
+    return std::make_tuple (p.weight, p.thickness, p.extent, p.middle_ratio, p.smallest_ratio, p.offset);
+  };
+  const bool swap = std::lexicographical_compare (second.parts.begin (), second.parts.end (), first.parts.begin (), first.parts.end (),
+                                                  [&] (const PartDescription& x, const PartDescription& y) { return key (x) < key (y); });
+  const ShapeDescription& a = swap ? second : first;
+  const ShapeDescription& b = swap ? first : second;
   std::vector<double> wa, wb;
   std::vector<Eigen::Matrix<double, 6, 1>> pa, pb;
   for (const PartDescription& p : a.parts)

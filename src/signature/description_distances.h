@@ -17,12 +17,13 @@ Eigen::Matrix<double, 6, 1>
 partPoint (const PartDescription& part);
 
 /** \brief Earth mover's distance between the parts of \a a and \a b; moving a part onto another
-  * costs the weighted Euclidean distance of their attributes (kPartAttributeWeights). */
+  * costs the weighted Euclidean distance of their attributes (kPartAttributeWeights). Exactly
+  * symmetric. */
 double
 partDistance (const ShapeDescription& a, const ShapeDescription& b);
 
 /** \brief The distance of \a method (not MatchMethod::Paper) between two non-empty descriptions of
-  * shapes of dimension \a dimension. */
+  * shapes of dimension \a dimension; exactly symmetric. */
 double
 descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeDescription& b, int dimension);
 

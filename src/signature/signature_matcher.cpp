@@ -254,10 +254,7 @@ SignatureMatcher::match (const Signature& a, const Signature& b) const
   }
   if (params_.method == pcl_flowseg::MatchMethod::Paper)
     return matchPaper (a, b);
-  // Each term is symmetric; adding the distance both ways keeps match (a, b) == match (b, a) exact.
-  const double ab = pcl_flowseg::descriptionDistance (params_.method, a.description, b.description, a.dimension);
-  const double ba = pcl_flowseg::descriptionDistance (params_.method, b.description, a.description, a.dimension);
-  r.score = 0.5 * (ab + ba);
+  r.score = pcl_flowseg::descriptionDistance (params_.method, a.description, b.description, a.dimension); // symmetric
   r.similarity = std::exp (-r.score);
   return r;
 }

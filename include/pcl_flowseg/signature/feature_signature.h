@@ -11,7 +11,8 @@ namespace pcl {
 
 /** \brief Segments a point sample (FlowSegmentation, interior features) and keeps the significant
   * features as a normalised pcl_flowseg::Signature (volume share as weight, volume-weighted
-  * centroid as position; invariant to translation, rotation, mirroring and uniform scale).
+  * centroid as position; invariant to translation, rotation, mirroring and uniform scale), with the
+  * shape's description (parts and interior distributions) that the default match method compares.
   *
   * \code
   * pcl::FeatureSignature<pcl::PointXYZ> sig;
