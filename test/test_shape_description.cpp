@@ -9,12 +9,14 @@
 
 #include <pcl_flowseg/signature/describe_shape.h>
 #include <pcl_flowseg/signature/signature_database.h>
+#include <pcl_flowseg/signature/shape_signature.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <numeric>
 #include <random>
 #include <unistd.h>
@@ -283,4 +285,52 @@ TEST (ShapeDescription, TheDatabaseKeepsDescriptionsExactlyAndRanksByThem)
     EXPECT_TRUE (hits[0].aligned);
     EXPECT_EQ (hits[0].similarity, matchWith (MatchMethod::Combined, query, back.entries ()[hits[0].entry].signature));
   }
+}
+
+TEST (DescriptionMatch, JitteredTwoDimensionalPointFilesAsHeldOutSetsArrive)
+{
+  // Held-out 2D sets arrive as `x y 0` text files of 1,000 boundary points jittered by a quarter
+  // pixel. Each 2D sample shape written so (a pixel taken as 1/200 of the shape's extent) must find
+  // its own re-sampled, moved copy before every other 2D shape.
+  std::mt19937 random (9);
+  const auto writeJittered = [&] (const std::string& name, std::uint32_t seed, double turn, const std::string& path) {
+    std::vector<V> pts = flowseg_test::shapeSample (name, 1000, seed);
+    Eigen::AlignedBox3d box;
+    for (const V& p : pts)
+      box.extend (p);
+    std::uniform_real_distribution<double> jitter (-0.25, 0.25);
+    const double pixel = box.sizes ().maxCoeff () / 200.0;
+    const Eigen::Matrix3d r = Eigen::AngleAxisd (turn, V::UnitZ ()).toRotationMatrix ();
+    std::ofstream out (path);
+    for (const V& p : pts)
+    {
+      const V q = r * p + pixel * V (jitter (random), jitter (random), 0.0);
+      out << q.x () << " " << q.y () << " 0\n";
+    }
+  };
+  const std::string dir = "/tmp/flowseg_xyz_" + std::to_string (::getpid ()) + "_";
+  std::vector<std::string> names;
+  for (const auto& shape : sampleShapes ())
+    if (shape.dimension == 2)
+      names.push_back (shape.name);
+  ASSERT_GE (names.size (), 3u);
+  std::vector<Signature> stored, queries;
+  for (const std::string& name : names)
+  {
+    Signature s, q;
+    writeJittered (name, 1, 0.0, dir + name + ".xyz");
+    writeJittered (name, 2, 0.9, dir + name + "_copy.xyz");
+    ASSERT_TRUE (signatureOfShapeFile (dir + name + ".xyz", ShapeInputOptions (), FlowParameters (), kDefaultSignificance, s).ok);
+    ASSERT_TRUE (signatureOfShapeFile (dir + name + "_copy.xyz", ShapeInputOptions (), FlowParameters (), kDefaultSignificance, q).ok);
+    EXPECT_EQ (s.dimension, 2) << name;
+    stored.push_back (s);
+    queries.push_back (q);
+    std::remove ((dir + name + ".xyz").c_str ());
+    std::remove ((dir + name + "_copy.xyz").c_str ());
+  }
+  for (std::size_t i = 0; i < names.size (); ++i)
+    for (std::size_t j = 0; j < names.size (); ++j)
+      if (j != i)
+        EXPECT_GT (matchWith (MatchMethod::Combined, queries[i], stored[i]), matchWith (MatchMethod::Combined, queries[i], stored[j]))
+            << names[i] << " vs " << names[j];
 }
