@@ -1,5 +1,6 @@
 /*
- * flowseg_signature: prints the signature of a shape (its significant features as weighted points).
+ * flowseg_signature: prints the signature of a shape (its significant features as weighted points,
+ * its described parts and interior distributions).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "common/flow_options.h"
@@ -10,9 +11,17 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
+
+/** The description's distributions with their names, in file order. */
+std::vector<std::pair<const char*, const pcl_flowseg::Distribution*>>
+distributions (const pcl_flowseg::ShapeDescription& d)
+{
+  return {{"thickness", &d.thickness}, {"inner_distance", &d.inner_distance}, {"solid_distance", &d.solid_distance}};
+}
 
 void
 printJson (const std::string& input, const pcl_flowseg::Signature& s)
@@ -25,7 +34,24 @@ printJson (const std::string& input, const pcl_flowseg::Signature& s)
     std::printf ("%s{\"position\": [%s, %s, %s], \"weight\": %s}", k ? ", " : "", jsonNumber (s.points[k].position.x ()).c_str (),
                  jsonNumber (s.points[k].position.y ()).c_str (), jsonNumber (s.points[k].position.z ()).c_str (),
                  jsonNumber (s.points[k].weight).c_str ());
-  std::printf ("]}\n");
+  std::printf ("], \"parts\": [");
+  const pcl_flowseg::ShapeDescription& d = s.description;
+  for (std::size_t k = 0; k < d.parts.size (); ++k)
+  {
+    const pcl_flowseg::PartDescription& q = d.parts[k];
+    std::printf ("%s{\"weight\": %s, \"thickness\": %s, \"extent\": %s, \"middle_ratio\": %s, \"smallest_ratio\": %s, \"offset\": %s}",
+                 k ? ", " : "", jsonNumber (q.weight).c_str (), jsonNumber (q.thickness).c_str (), jsonNumber (q.extent).c_str (),
+                 jsonNumber (q.middle_ratio).c_str (), jsonNumber (q.smallest_ratio).c_str (), jsonNumber (q.offset).c_str ());
+  }
+  std::printf ("], \"distributions\": {");
+  for (const auto& [name, bins] : distributions (d))
+  {
+    std::printf ("%s\"%s\": [", name == distributions (d)[0].first ? "" : ", ", name);
+    for (std::size_t k = 0; k < bins->size (); ++k)
+      std::printf ("%s%s", k ? ", " : "", jsonNumber ((*bins)[k]).c_str ());
+    std::printf ("]");
+  }
+  std::printf ("}}\n");
 }
 
 void
@@ -36,6 +62,16 @@ printTable (const std::string& input, const pcl_flowseg::Signature& s)
   std::printf ("weight\tx\ty\tz\n");
   for (const auto& p : s.points)
     std::printf ("%.4f\t%.4f\t%.4f\t%.4f\n", p.weight, p.position.x (), p.position.y (), p.position.z ());
+  std::printf ("\n%zu described parts\nweight\tthickness\textent\tmiddle\tsmallest\toffset\n", s.description.parts.size ());
+  for (const auto& q : s.description.parts)
+    std::printf ("%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\n", q.weight, q.thickness, q.extent, q.middle_ratio, q.smallest_ratio, q.offset);
+  for (const auto& [name, bins] : distributions (s.description))
+  {
+    std::printf ("\n%s distribution (%zu bins):", name, bins->size ());
+    for (double v : *bins)
+      std::printf (" %.4f", v);
+  }
+  std::printf ("\n");
 }
 
 } // namespace
@@ -48,7 +84,9 @@ main (int argc, char** argv)
   bool json = false;
   flowseg_app::OptionParser p ("flowseg_signature", "flowseg_signature INPUT [options]",
                                "Prints the shape's significant features as weighted points in the normalised frame (positions\n"
-                               "relative to the interior's centroid, in units of interior volume^(1/d); weights sum to 1).");
+                               "relative to the interior's centroid, in units of interior volume^(1/d); weights sum to 1), then its\n"
+                               "description: the parts (volume share, thickness, extent, axis ratios, offset from the centre, in\n"
+                               "the same unit) and the thickness, inner- and solid-distance distributions (32 bins each).");
   flowseg_app::addMergeOptions (p, params.merge);
   flowseg_app::addSignatureOptions (p, signature);
   flowseg_app::addThreadsOption (p, params.execution.threads);

@@ -257,6 +257,16 @@ sig="$build/apps/flowseg_signature"
 mat="$build/apps/flowseg_match"
 expect "signature" 0 "significant features" -- "$sig" "$src/samples/snowman3d.pcd"
 expect "signature json" 0 '"points": \[' -- "$sig" "$src/samples/animal3d.pcd" --json
+expect "signature lists the described parts" 0 "3 described parts" -- "$sig" "$src/samples/snowman3d.pcd"
+if command -v python3 >/dev/null 2>&1; then
+  "$sig" "$src/samples/animal3d.pcd" --json | python3 -c '
+import json, sys
+d = json.load(sys.stdin)
+assert len(d["parts"]) >= 6 and abs(sum(p["weight"] for p in d["parts"]) - 1) < 1e-9, d["parts"]
+assert sorted(d["distributions"]) == ["inner_distance", "solid_distance", "thickness"]
+assert all(len(v) == 32 and abs(sum(v) - 1) < 1e-9 for v in d["distributions"].values())'
+  check "signature json holds the description" $?
+fi
 expect "signature bad option" 2 "unknown option" -- "$sig" "$src/samples/animal3d.pcd" --frob
 expect "match alignment points refused by the library's rule" 2 "alignment-points: " -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --alignment-points 0
 expect "signature missing file" 1 "cannot open" -- "$sig" "$work/none.pcd"
