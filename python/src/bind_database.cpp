@@ -119,9 +119,9 @@ bindHit (py::module_& m)
       .def_readonly ("index", &Hit::index, "Position of the shape in Database.entries().")
       .def_readonly ("name", &Hit::name)
       .def_readonly ("label", &Hit::label)
-      .def_readonly ("similarity", &Hit::similarity, "MatchResult.similarity (NaN when not aligned).")
+      .def_readonly ("similarity", &Hit::similarity, "MatchResult.similarity (NaN when not compared in full).")
       .def_readonly ("score", &Hit::score)
-      .def_readonly ("aligned", &Hit::aligned, "False for shapes outside the candidates, ranked by summary distance only.")
+      .def_readonly ("aligned", &Hit::aligned, "True when compared in full; false for shapes outside the candidates, ranked by summary distance only.")
       .def_readonly ("summary_distance", &Hit::summary_distance)
       .def ("__repr__", [] (const Hit& h) { return "<QueryHit " + h.label + " " + h.name + " similarity=" + std::to_string (h.similarity) + ">"; });
 }

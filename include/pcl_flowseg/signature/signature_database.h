@@ -26,9 +26,10 @@ struct QueryHit
 {
   std::size_t entry = 0; ///< index into SignatureDatabase::entries()
   double similarity = 0.0; ///< SignatureMatcher::Result::similarity (the ranking key)
-  double score = 0.0;      ///< the paper's raw score
-  /** True when the query was aligned with this shape (similarity and score set); false for shapes
-    * outside the candidates, ranked by summary distance only (similarity and score are NaN). */
+  double score = 0.0;      ///< SignatureMatcher::Result::score (paper: raw score; other methods: distance)
+  /** True when the query was compared with this shape in full (aligned, for the paper's method;
+    * similarity and score set); false for shapes outside the candidates, ranked by summary distance
+    * only (similarity and score are NaN). The name dates from the paper's method. */
   bool aligned = true;
   double summary_distance = 0.0; ///< distance between the two signatures' summaries
 };
