@@ -44,9 +44,11 @@ printJson (const std::string& input, const pcl_flowseg::Signature& s)
                  jsonNumber (q.middle_ratio).c_str (), jsonNumber (q.smallest_ratio).c_str (), jsonNumber (q.offset).c_str ());
   }
   std::printf ("], \"distributions\": {");
+  const char* separator = "";
   for (const auto& [name, bins] : distributions (d))
   {
-    std::printf ("%s\"%s\": [", name == distributions (d)[0].first ? "" : ", ", name);
+    std::printf ("%s\"%s\": [", separator, name);
+    separator = ", ";
     for (std::size_t k = 0; k < bins->size (); ++k)
       std::printf ("%s%s", k ? ", " : "", jsonNumber ((*bins)[k]).c_str ());
     std::printf ("]");
