@@ -80,29 +80,16 @@ partDistance (const ShapeDescription& first, const ShapeDescription& second)
 double
 descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeDescription& b, int dimension)
 {
-  switch (method)
-  {
-  case MatchMethod::Parts:
-    return partDistance (a, b);
-  case MatchMethod::Thickness:
-    return l1Distance (a.thickness, b.thickness);
-  case MatchMethod::InnerDistance:
-    return chiSquareDistance (a.inner_distance, b.inner_distance);
-  case MatchMethod::SolidDistance:
-    return l1Distance (a.solid_distance, b.solid_distance);
-  case MatchMethod::Paper:
-  case MatchMethod::Combined:
-    break;
-  }
-  const DescriptionWeights& w = dimension == 2 ? kCombinedWeights2d : kCombinedWeights3d;
+  const DescriptionWeights w = descriptionWeights (method, dimension);
   double sum = 0.0;
-  const std::pair<double, MatchMethod> terms[] = {{w.parts, MatchMethod::Parts},
-                                                  {w.thickness, MatchMethod::Thickness},
-                                                  {w.inner_distance, MatchMethod::InnerDistance},
-                                                  {w.solid_distance, MatchMethod::SolidDistance}};
-  for (const auto& [weight, component] : terms)
-    if (weight > 0.0)
-      sum += weight * descriptionDistance (component, a, b, dimension);
+  if (w.parts > 0.0)
+    sum += w.parts * partDistance (a, b);
+  if (w.thickness > 0.0)
+    sum += w.thickness * l1Distance (a.thickness, b.thickness);
+  if (w.inner_distance > 0.0)
+    sum += w.inner_distance * chiSquareDistance (a.inner_distance, b.inner_distance);
+  if (w.solid_distance > 0.0)
+    sum += w.solid_distance * l1Distance (a.solid_distance, b.solid_distance);
   return sum;
 }
 

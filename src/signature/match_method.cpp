@@ -1,30 +1,55 @@
 /*
- * pcl_flowseg - the names of the match methods.
+ * pcl_flowseg - the names of the match methods and the distances each weighs.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <pcl_flowseg/signature/match_method.h>
 
+#include <utility>
+
 namespace pcl_flowseg {
+
+namespace {
+
+/** Each method and its name in files, options and reports. */
+constexpr std::pair<MatchMethod, const char*> kMethodNames[] = {
+    {MatchMethod::Combined, "flowseg"}, {MatchMethod::Paper, "paper"},         {MatchMethod::Parts, "parts"},
+    {MatchMethod::Thickness, "thickness"}, {MatchMethod::InnerDistance, "inner"}, {MatchMethod::SolidDistance, "solid"}};
+
+} // namespace
 
 const char*
 matchMethodName (MatchMethod method)
 {
+  for (const auto& [m, name] : kMethodNames)
+    if (m == method)
+      return name;
+  return "unknown";
+}
+
+DescriptionWeights
+descriptionWeights (MatchMethod method, int dimension)
+{
+  DescriptionWeights w;
   switch (method)
   {
-  case MatchMethod::Combined:
-    return "flowseg";
-  case MatchMethod::Paper:
-    return "paper";
   case MatchMethod::Parts:
-    return "parts";
+    w.parts = 1.0;
+    break;
   case MatchMethod::Thickness:
-    return "thickness";
+    w.thickness = 1.0;
+    break;
   case MatchMethod::InnerDistance:
-    return "inner";
+    w.inner_distance = 1.0;
+    break;
   case MatchMethod::SolidDistance:
-    return "solid";
+    w.solid_distance = 1.0;
+    break;
+  case MatchMethod::Combined:
+  case MatchMethod::Paper:
+    w = dimension == 2 ? kCombinedWeights2d : kCombinedWeights3d;
+    break;
   }
-  return "unknown";
+  return w;
 }
 
 Status

@@ -36,37 +36,6 @@ signatureSummary (const Signature& signature)
   return out;
 }
 
-namespace {
-
-/** The weight of each block of descriptionSummary under \a method. */
-DescriptionWeights
-summaryWeights (MatchMethod method, int dimension)
-{
-  DescriptionWeights w;
-  switch (method)
-  {
-  case MatchMethod::Parts:
-    w.parts = 1.0;
-    break;
-  case MatchMethod::Thickness:
-    w.thickness = 1.0;
-    break;
-  case MatchMethod::InnerDistance:
-    w.inner_distance = 1.0;
-    break;
-  case MatchMethod::SolidDistance:
-    w.solid_distance = 1.0;
-    break;
-  case MatchMethod::Combined:
-  case MatchMethod::Paper:
-    w = dimension == 2 ? kCombinedWeights2d : kCombinedWeights3d;
-    break;
-  }
-  return w;
-}
-
-} // namespace
-
 std::array<float, kDescriptionSummarySize>
 descriptionSummary (const Signature& signature, MatchMethod method)
 {
@@ -74,7 +43,7 @@ descriptionSummary (const Signature& signature, MatchMethod method)
   const ShapeDescription& d = signature.description;
   if (d.empty ())
     return out;
-  const DescriptionWeights w = summaryWeights (method, signature.dimension);
+  const DescriptionWeights w = descriptionWeights (method, signature.dimension);
   std::size_t at = 0;
   for (const auto& [h, weight] : {std::pair<const Distribution*, double> (&d.thickness, w.thickness),
                                   {&d.inner_distance, w.inner_distance}, {&d.solid_distance, w.solid_distance}})

@@ -60,6 +60,12 @@ constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 3.0, 1.5};
   * bull's eye scores over a grid of weights). */
 constexpr DescriptionWeights kCombinedWeights2d{2.0, 0.5, 4.5, 3.0};
 
+/** \brief The weight each description distance has under \a method: kCombinedWeights2d or
+  * kCombinedWeights3d (by \a dimension) for Combined, and also for Paper, which compares no
+  * description; 1 for the one distance of a single-component method, 0 for the others. */
+DescriptionWeights
+descriptionWeights (MatchMethod method, int dimension);
+
 /** \brief Weights of a part's attributes in the cost of moving it onto another part (MatchMethod::Parts):
   * the distance between two parts is the Euclidean distance of (weight x attribute), with logs of
   * thickness, extent and weight. */
