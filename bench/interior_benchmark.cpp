@@ -57,7 +57,7 @@ struct Options
   std::string only;
   bool verbose = false;
   pcl_flowseg::Denoising denoising = pcl_flowseg::Denoising::Automatic;
-  unsigned smoothing_passes = 0; // the library's PreparationParameters::smoothing_passes
+  pcl_flowseg::PreparationParameters preparation; // its smoothing and smoothing_passes
 };
 
 bool
@@ -76,12 +76,17 @@ parseOptions (int argc, char** argv, Options& o)
       const std::string m = argv[++i];
       o.denoising = m == "off" ? pcl_flowseg::Denoising::Off : m == "on" ? pcl_flowseg::Denoising::Always : pcl_flowseg::Denoising::Automatic;
     }
-    else if (a == "--smooth" && i + 1 < argc) o.smoothing_passes = static_cast<unsigned> (std::atoi (argv[++i]));
+    else if (a == "--smooth" && i + 1 < argc)
+    {
+      const std::string m = argv[++i];
+      o.preparation.smoothing = m == "off" ? pcl_flowseg::Smoothing::Off : m == "on" ? pcl_flowseg::Smoothing::Always : pcl_flowseg::Smoothing::Automatic;
+    }
+    else if (a == "--smooth-passes" && i + 1 < argc) o.preparation.smoothing_passes = static_cast<unsigned> (std::atoi (argv[++i]));
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_interior [--meshes DIR] [--points 5000,50000] [--noise 0,0.0025,0.005] [--only NAME]\n"
-                            "                              [--denoise auto|off|on] [--smooth N (0)] [--verbose]\n"
-                            "  --smooth N: smoothing passes before the triangulation (PreparationParameters::smoothing_passes)\n"
+                            "                              [--denoise auto|off|on] [--smooth auto|off|on] [--smooth-passes N] [--verbose]\n"
+                            "  --smooth, --smooth-passes: smoothing before the triangulation (PreparationParameters::smoothing, ::smoothing_passes)\n"
                             "  noise: standard deviation as a fraction of the bounding-box diagonal\n");
       return false;
     }
@@ -102,7 +107,8 @@ evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, con
   pcl_flowseg::FlowParameters params;
   params.preparation.dimension = pcl_flowseg::DimensionMode::Spatial;
   params.interior.denoising = o.denoising;
-  params.preparation.smoothing_passes = o.smoothing_passes;
+  params.preparation.smoothing = o.preparation.smoothing;
+  params.preparation.smoothing_passes = o.preparation.smoothing_passes;
   pcl_flowseg::FlowResult r;
   const auto status = pcl_flowseg::runFlowSegmentation (pts, params, r);
   if (!status)

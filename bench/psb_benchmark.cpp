@@ -70,13 +70,13 @@ const char* const kUsage =
   "                         [--paper-rule]   (merge parameters: the library's defaults unless given)\n"
   "                         [--significance F (0: every feature)] [--min-part-share F]\n"
   "                         [--noise F (0)] [--outliers F (0)] [--scan-from six|X,Y,Z]\n"
-  "                         [--outlier-removal auto|off|on (auto)] [--smooth N (0)]\n"
+  "                         [--outlier-removal auto|off|on (auto)] [--smooth auto|off|on (auto)] [--smooth-passes N (6)]\n"
   "  --noise F: Gaussian noise of standard deviation F times the bounding-box diagonal\n"
   "  --outliers F: that share of the sample replaced by points uniform in its bounding box\n"
   "  --scan-from: single views instead of whole samples, the sensor 3 bounding radii from the centre\n"
   "               in the direction X,Y,Z or in each of the six axis directions (six); --noise is\n"
   "               then depth noise; the error counts only the faces the scan sees, averaged over views\n"
-  "  --outlier-removal, --smooth N: PreparationParameters::outliers and ::smoothing_passes\n"
+  "  --outlier-removal, --smooth, --smooth-passes: PreparationParameters::outliers, ::smoothing, ::smoothing_passes\n"
   "  --paper-rule: the paper's merging rule alone (tolerance, stump ratio, compact size 0)\n"
   "  --significance F: only features above F of the features' volume label faces; the faces of the\n"
   "                    others take the label of the nearest significant samples\n"
@@ -139,14 +139,14 @@ parseRhoList (const std::string& list, std::vector<double>& rhos, std::string& e
   return true;
 }
 
+/** An auto | off | on option's value as the library's Automatic / Off / Always mode. */
+template <typename Mode>
 bool
-parseOutlierRemoval (const std::string& mode, pcl_flowseg::OutlierRemoval& removal, std::string& error)
+parseMode (const std::string& option, const std::string& value, Mode& mode, std::string& error)
 {
-  if (mode != "auto" && mode != "off" && mode != "on")
-    return error = "--outlier-removal needs auto, off or on", false;
-  removal = mode == "auto"  ? pcl_flowseg::OutlierRemoval::Automatic
-            : mode == "off" ? pcl_flowseg::OutlierRemoval::Off
-                            : pcl_flowseg::OutlierRemoval::Always;
+  if (value != "auto" && value != "off" && value != "on")
+    return error = option + " needs auto, off or on", false;
+  mode = value == "auto" ? Mode::Automatic : value == "off" ? Mode::Off : Mode::Always;
   return true;
 }
 
@@ -219,13 +219,14 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
       if (!parseRhoList (argv[++i], o.rhos, error))
         return false;
     }
-    else if (a == "--smooth" && has_value)
-      o.flow.preparation.smoothing_passes = static_cast<unsigned> (std::strtoul (argv[++i], nullptr, 10));
-    else if (a == "--outlier-removal" && has_value)
+    else if ((a == "--smooth" || a == "--outlier-removal") && has_value)
     {
-      if (!parseOutlierRemoval (argv[++i], o.flow.preparation.outliers, error))
+      const std::string mode = argv[++i];
+      if (!(a == "--smooth" ? parseMode (a, mode, o.flow.preparation.smoothing, error) : parseMode (a, mode, o.flow.preparation.outliers, error)))
         return false;
     }
+    else if (a == "--smooth-passes" && has_value)
+      o.flow.preparation.smoothing_passes = static_cast<unsigned> (std::strtoul (argv[++i], nullptr, 10));
     else
       return error = "unknown or incomplete option " + a, false;
   }

@@ -138,9 +138,15 @@ expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off"
 expect "outliers found and left out" 0 "left out as outliers" -- "$seg" "$work/out.pcd" -o "$work/out"
 grep -q '"outlier_points": [1-9]' "$work/out.json"; check "the JSON counts the outliers" $?
 expect "outliers kept on request" 0 " 0 outliers)" -- "$seg" "$work/out.pcd" --outliers off -o "$work/out"
-expect "smoothing before the triangulation" 0 "segments after merging" -- "$seg" "$work/out.pcd" --smooth 2 -o "$work/smooth"
-grep -q '"smoothing_passes": 2' "$work/smooth.json"; check "the JSON records the smoothing passes" $?
-expect "smoothing passes absurd" 2 "smooth" -- "$seg" "$src/samples/hand2d.pcd" --smooth 99
+expect "smoothing forced" 0 ", 2 smoothing pass\(es\)" -- "$seg" "$work/out.pcd" --smooth on --smooth-passes 2 -o "$work/smooth"
+grep -q '^  "smoothing_passes": 2,' "$work/smooth.json"; check "the JSON records the smoothing passes made" $?
+grep -q '"smoothing": "always", "smoothing_passes": 2' "$work/smooth.json"; check "the JSON records the smoothing asked for" $?
+expect "noisy sample" 0 "noise sigma" -- "$smp" "$work/tet.off" -n 3000 --noise 0.005 -o "$work/noisy.pcd"
+expect "noisy sample smoothed automatically" 0 "roughness 0\.[1-9][0-9]*, .*, [1-6] smoothing pass\(es\)" -- "$seg" "$work/noisy.pcd" -o "$work/noisy"
+expect "smoothing off" 0 ", 0 smoothing pass\(es\)" -- "$seg" "$work/noisy.pcd" --smooth off -o "$work/noisy"
+expect "smoothing passes absurd" 2 "smooth-passes" -- "$seg" "$src/samples/hand2d.pcd" --smooth-passes 99
+expect "smoothing passes zero" 2 "smooth-passes" -- "$seg" "$src/samples/hand2d.pcd" --smooth-passes 0
+expect "smoothing mode absurd" 2 "smooth" -- "$seg" "$src/samples/hand2d.pcd" --smooth 2
 expect "outlier mode absurd" 2 "outliers" -- "$seg" "$src/samples/hand2d.pcd" --outliers sometimes
 expect "sampler bad outliers" 2 "outliers" -- "$smp" "$work/tet.off" --outliers 2 -o "$work/x.pcd"
 expect "smallest part share absurd" 2 "min-part-share" -- "$seg" "$src/samples/hand2d.pcd" --min-part-share 1

@@ -245,6 +245,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   seg.setDimension (2);
   seg.setPlanarTolerance (1e-6);
   seg.setOutlierRemoval (pcl_flowseg::OutlierRemoval::Always);
+  seg.setSmoothing (pcl_flowseg::Smoothing::Always);
   seg.setSmoothingPasses (1);
   seg.setSeparateInterior (true);
   seg.setDenoising (pcl_flowseg::Denoising::Off);
@@ -261,6 +262,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   EXPECT_EQ (p.preparation.dimension, pcl_flowseg::DimensionMode::Planar);
   EXPECT_EQ (p.preparation.planar_tolerance, 1e-6);
   EXPECT_EQ (p.preparation.outliers, pcl_flowseg::OutlierRemoval::Always);
+  EXPECT_EQ (p.preparation.smoothing, pcl_flowseg::Smoothing::Always);
   EXPECT_EQ (p.preparation.smoothing_passes, 1u);
   EXPECT_EQ (p.interior.denoising, pcl_flowseg::Denoising::Off);
   EXPECT_EQ (p.features, pcl_flowseg::FeatureSide::Both);

@@ -59,8 +59,13 @@ addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
             std::vector<std::pair<std::string, pcl_flowseg::OutlierRemoval>>{{"auto", pcl_flowseg::OutlierRemoval::Automatic},
                                                                               {"off", pcl_flowseg::OutlierRemoval::Off},
                                                                               {"on", pcl_flowseg::OutlierRemoval::Always}});
-  p.count ("--smooth", "N", "smoothing passes before the triangulation, for samples known to be\nnoisy (2 for a depth camera); thin walls collapse. 3D only", params.preparation.smoothing_passes,
-           0u, pcl_flowseg::kMaxSmoothingPasses);
+  p.choice ("--smooth", "MODE", "auto | off | on: smooth a 3D sample before the triangulation (thin\nwalls keep their sides); auto: when the sample is rough (noisy)",
+            params.preparation.smoothing,
+            std::vector<std::pair<std::string, pcl_flowseg::Smoothing>>{{"auto", pcl_flowseg::Smoothing::Automatic},
+                                                                         {"off", pcl_flowseg::Smoothing::Off},
+                                                                         {"on", pcl_flowseg::Smoothing::Always}});
+  p.count ("--smooth-passes", "N", "smoothing passes: the most (auto) or exactly N (on)", params.preparation.smoothing_passes, 1u,
+           pcl_flowseg::kMaxSmoothingPasses);
   pcl_flowseg::InteriorParameters* in = &params.interior;
   p.action ("--no-interior", "skip interior/exterior separation: the paper's raw segmentation of\nthe whole convex hull, every segment reported",
             [in] () { in->separate = false; });

@@ -131,7 +131,7 @@ flowNumber (Group pcl_flowseg::FlowParameters::*group, double Group::*field)
 }
 
 const std::vector<std::string> kDimensionNames = {"automatic", "", "planar", "spatial"};
-/** The names of the Automatic / Off / Always modes (Denoising, OutlierRemoval), in enum order. */
+/** The names of the Automatic / Off / Always modes (Denoising, OutlierRemoval, Smoothing), in enum order. */
 const std::vector<std::string> kModeNames = {"automatic", "off", "always"};
 const std::vector<std::string> kFeatureNames = {"interior", "exterior", "both"};
 
@@ -165,9 +165,10 @@ addFlowKeywords (std::map<std::string, Keyword>& k)
                     }};
   k["planar_tolerance"] = {kFlowArguments, flowNumber (&FP::preparation, &pcl_flowseg::PreparationParameters::planar_tolerance)};
   k["outliers"] = {kFlowArguments, flowChoice (&FP::preparation, &pcl_flowseg::PreparationParameters::outliers, kModeNames)};
+  k["smoothing"] = {kFlowArguments, flowChoice (&FP::preparation, &pcl_flowseg::PreparationParameters::smoothing, kModeNames)};
   k["smoothing_passes"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
                              std::int64_t passes = 0;
-                             const Conversion r = toCount (n, v, 0, pcl_flowseg::kMaxSmoothingPasses, passes);
+                             const Conversion r = toCount (n, v, 1, pcl_flowseg::kMaxSmoothingPasses, passes);
                              c.flow.preparation.smoothing_passes = static_cast<unsigned> (passes);
                              return r;
                            }};
@@ -302,6 +303,7 @@ flowArguments (const pcl_flowseg::FlowParameters& p)
   a.emplace_back ("dimension", kDimensionNames[dimension]);
   a.emplace_back ("planar_tolerance", p.preparation.planar_tolerance);
   a.emplace_back ("outliers", kModeNames[static_cast<std::size_t> (p.preparation.outliers) % 3]);
+  a.emplace_back ("smoothing", kModeNames[static_cast<std::size_t> (p.preparation.smoothing) % 3]);
   a.emplace_back ("smoothing_passes", static_cast<std::int64_t> (p.preparation.smoothing_passes));
   a.emplace_back ("rho", p.merge.rho);
   a.emplace_back ("sampling_tolerance", p.merge.sampling_tolerance);

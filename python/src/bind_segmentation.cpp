@@ -275,11 +275,15 @@ bindResult (py::module_& m)
         py::dict d;
         d["sigma"] = s.result->noise.sigma;
         d["share"] = s.result->noise.share;
+        d["roughness"] = s.result->noise.roughness;
         d["isolated_share"] = s.result->noise.isolated_share;
         d["points_used"] = s.result->noise.points_used;
         return d;
-      }, "The sample's estimated noise: sigma (input units), share (of the bounding-box diagonal), isolated_share "
-         "(share of the points far from their neighbours), points_used.")
+      }, "The sample's estimated noise: sigma (input units), share (of the bounding-box diagonal), roughness "
+         "(in sample spacings; above 0.1 automatic smoothing acts), isolated_share (share of the points far from "
+         "their neighbours), points_used.")
+      .def_property_readonly ("smoothing_passes", [] (const Segmentation& s) { return s.result->smoothing_passes; },
+                              "Smoothing passes made before the triangulation (0: the vertices are the points).")
       .def_property_readonly ("interior", [] (const Segmentation& s) { return interiorReport (s.result->interior); },
                               "What the interior/exterior separation found.")
       .def_property_readonly ("warnings", [] (const Segmentation& s) { return s.result->warnings; })
@@ -315,7 +319,7 @@ points: (n, 2) or (n, 3) float32/float64 array (2 columns: a 2D shape). NaN/Inf 
     and counted (label -1); duplicates take the label of their first copy.
 normals: None or (n, 3) array of outward normals (evidence for the interior/exterior separation).
 progress: None or a callable(stage: str, fraction: float), called during the run.
-Keywords (see defaults()): dimension, planar_tolerance, outliers, smoothing_passes, rho, sampling_tolerance, stump_ratio,
+Keywords (see defaults()): dimension, planar_tolerance, outliers, smoothing, smoothing_passes, rho, sampling_tolerance, stump_ratio,
     compact_rho, compact_size, min_part_share, separate, denoising, viewpoint, features, threads, memory_limit,
     significance.
 Raises ValueError for input that cannot be segmented or a parameter out of range, TypeError for

@@ -46,7 +46,7 @@ def test_result_holds_features_adjacency_timings():
 def test_parameters_round_trip():
     points, _ = fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))
     given = dict(rho=1.3, sampling_tolerance=0.25, stump_ratio=0.0, compact_rho=1.5, compact_size=0.0, min_part_share=0.01,
-                 denoising="off", outliers="off", smoothing_passes=1, features="both", threads=1, dimension="spatial", planar_tolerance=1e-6,
+                 denoising="off", outliers="off", smoothing="always", smoothing_passes=1, features="both", threads=1, dimension="spatial", planar_tolerance=1e-6,
                  viewpoint=(0.0, 0.0, 10.0), memory_limit=8 << 30, separate=True, significance=0.05)
     seg = fs.segment(points, **given)
     used = seg.parameters
@@ -107,7 +107,7 @@ def test_bad_arrays_raise_value_error(array, message):
 BAD_PARAMETERS = [
     dict(rho=-1), dict(rho=float("nan")), dict(rho="big"), dict(rho=True), dict(threads=-1), dict(threads=1.5),
     dict(threads=10 ** 30), dict(threads=5000), dict(dimension="cubic"), dict(dimension=3), dict(viewpoint=(1, 2)), dict(viewpoint="up"),
-    dict(viewpoint=(0, 0, float("inf"))), dict(viewpoint=b"abc"), dict(viewpoint=[0, 0, "z"]), dict(rho=[1.0]), dict(features="outside"), dict(denoising="maybe"), dict(outliers="sometimes"), dict(smoothing_passes=99), dict(smoothing_passes=-1), dict(separate=1),
+    dict(viewpoint=(0, 0, float("inf"))), dict(viewpoint=b"abc"), dict(viewpoint=[0, 0, "z"]), dict(rho=[1.0]), dict(features="outside"), dict(denoising="maybe"), dict(outliers="sometimes"), dict(smoothing_passes=99), dict(smoothing_passes=-1), dict(smoothing_passes=0), dict(smoothing="sometimes"), dict(separate=1),
     dict(significance=1.5), dict(memory_limit=-5), dict(stump_ratio=0.5), dict(compact_size=-1),
 ]
 
@@ -162,6 +162,18 @@ def test_isolated_points_are_left_out_and_counted():
     assert (seg.labels[len(points):] == -1).sum() >= 25
     kept = fs.segment(noisy, outliers="off")
     assert kept.outlier_points == 0 and kept.noise["isolated_share"] == seg.noise["isolated_share"]
+
+
+def test_noisy_samples_are_smoothed_automatically():
+    points, _ = fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))
+    clean = fs.segment(points)
+    assert clean.noise["roughness"] < 0.1 and clean.smoothing_passes == 0
+    diagonal = np.linalg.norm(points.max(0) - points.min(0))
+    noisy = points + np.random.default_rng(2).normal(scale=0.005 * diagonal, size=points.shape)
+    seg = fs.segment(noisy)
+    assert seg.noise["roughness"] > 0.1 and 1 <= seg.smoothing_passes <= seg.parameters["smoothing_passes"]
+    raw = fs.segment(noisy, smoothing="off")
+    assert raw.smoothing_passes == 0 and len(raw.features) > len(seg.features)
 
 
 def test_gil_is_released_during_the_computation():

@@ -46,9 +46,12 @@ checkParameters (const FlowParameters& p)
   const OutlierRemoval o = p.preparation.outliers;
   if (o != OutlierRemoval::Automatic && o != OutlierRemoval::Off && o != OutlierRemoval::Always)
     return Status::error ("outlier removal must be automatic, off or always");
-  if (p.preparation.smoothing_passes > kMaxSmoothingPasses)
-    return Status::error ("smoothing passes must be at most " + std::to_string (kMaxSmoothingPasses) + ", got " +
-                          std::to_string (p.preparation.smoothing_passes));
+  const Smoothing m = p.preparation.smoothing;
+  if (m != Smoothing::Automatic && m != Smoothing::Off && m != Smoothing::Always)
+    return Status::error ("smoothing must be automatic, off or always");
+  if (p.preparation.smoothing_passes < 1 || p.preparation.smoothing_passes > kMaxSmoothingPasses)
+    return Status::error ("smoothing passes must be 1 to " + std::to_string (kMaxSmoothingPasses) + ", got " +
+                          std::to_string (p.preparation.smoothing_passes) + " (smoothing off: Smoothing::Off)");
   if (const Status merge = checkMergeParameters (p.merge); !merge)
     return merge;
   const Denoising n = p.interior.denoising;

@@ -47,6 +47,9 @@ parametersJson (const FlowParameters& p)
   s += ", \"planar_tolerance\": " + num (p.preparation.planar_tolerance) + ", \"outliers\": ";
   const OutlierRemoval o = p.preparation.outliers;
   s += o == OutlierRemoval::Automatic ? "\"auto\"" : o == OutlierRemoval::Off ? "\"off\"" : "\"always\"";
+  const Smoothing m = p.preparation.smoothing;
+  s += ", \"smoothing\": ";
+  s += m == Smoothing::Automatic ? "\"auto\"" : m == Smoothing::Off ? "\"off\"" : "\"always\"";
   s += ", \"smoothing_passes\": " + std::to_string (p.preparation.smoothing_passes) + "}";
   s += ", \"merge\": {\"rho\": " + num (p.merge.rho) + ", \"sampling_tolerance\": " + num (p.merge.sampling_tolerance) +
        ", \"stump_ratio\": " + num (p.merge.stump_ratio) + ", \"compact_rho\": " + num (p.merge.compact_rho) +
@@ -71,6 +74,7 @@ writeCounts (std::ostream& out, const FlowResult& r, const RunInfo& info)
   out << "  \"non_finite_points\": " << r.non_finite_points << ",\n";
   out << "  \"duplicate_points\": " << r.duplicate_points << ",\n";
   out << "  \"outlier_points\": " << r.outlier_points << ",\n";
+  out << "  \"smoothing_passes\": " << r.smoothing_passes << ",\n";
   out << "  \"vertices\": " << r.vertices.size () << ",\n";
   out << "  \"cells\": " << r.cells.size () << ",\n";
   out << "  \"maxima\": " << r.maxima.size () << ",\n";
@@ -159,7 +163,8 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
     out << "{\n";
     writeCounts (out, r, info);
     out << "  \"noise\": {\"sigma\": " << num (r.noise.sigma) << ", \"share\": " << num (r.noise.share)
-        << ", \"isolated_share\": " << num (r.noise.isolated_share) << ", \"points_used\": " << r.noise.points_used
+        << ", \"isolated_share\": " << num (r.noise.isolated_share) << ", \"roughness\": " << num (r.noise.roughness)
+        << ", \"points_used\": " << r.noise.points_used
         << "},\n";
     writeInterior (out, r.interior);
     writeSegments (out, r, info.significance);

@@ -8,10 +8,10 @@
 #include "core/delaunay/delaunay_cells.h"
 #include "core/flow/manifold_summary.h"
 #include "core/flow/stable_manifolds.h"
-#include "core/interior/denoising.h"
 #include "core/interior/facet_agreement.h"
 #include "core/interior/interior_labelling.h"
 #include "core/interior/noise_estimate.h"
+#include "core/interior/sample_smoothing.h"
 #include "core/labels/point_labels.h"
 #include "core/merging/manifold_merging.h"
 #include "core/preparation/outlier_removal.h"
@@ -116,22 +116,22 @@ outlierStage (const Run& run, core::PreparedPoints& prepared)
   result.timings.preparation_ms += millisecondsSince (start);
 }
 
-/** The requested smoothing passes on a 3D sample's vertices (PreparationParameters::smoothing_passes). */
+/** Smoothing of a 3D sample's vertices before the triangulation (PreparationParameters::smoothing). */
 void
 smoothingStage (const Run& run, core::PreparedPoints& prepared)
 {
-  const unsigned passes = run.params.preparation.smoothing_passes;
-  if (passes == 0)
-    return;
+  const PreparationParameters& params = run.params.preparation;
   FlowResult& result = run.result;
   if (prepared.dimension != 3)
   {
-    result.warnings.push_back ("smoothing passes apply to 3D samples only: this 2D sample was not smoothed");
+    if (params.smoothing == Smoothing::Always)
+      result.warnings.push_back ("smoothing applies to 3D samples only: this 2D sample was not smoothed");
     return;
   }
   const auto start = Clock::now ();
-  for (unsigned pass = 0; pass < passes; ++pass)
-    prepared.vertices = core::smoothPoints (prepared.vertices, core::nearestNeighbourhoods (prepared.vertices), 3);
+  result.smoothing_passes = core::smoothSample (prepared.vertices, result.noise, params);
+  if (params.smoothing == Smoothing::Always && result.smoothing_passes == 0)
+    result.warnings.push_back ("smoothing asked for, but the sample shows no noise to smooth (estimated sigma 0)");
   result.timings.preparation_ms += millisecondsSince (start);
 }
 

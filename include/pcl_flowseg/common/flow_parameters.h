@@ -37,6 +37,22 @@ enum class OutlierRemoval
   Always = 2     ///< always
 };
 
+/** \brief Whether a 3D sample is smoothed before the triangulation. */
+enum class Smoothing
+{
+  Automatic = 0, ///< when the sample is rough (NoiseEstimate::roughness above kRoughSample)
+  Off = 1,       ///< never: the vertices are the points
+  Always = 2     ///< always, exactly PreparationParameters::smoothing_passes passes
+};
+
+/** \brief Roughness (NoiseEstimate::roughness) above which automatic smoothing acts: between the
+  * clean samples of the development meshes and those with 0.25% noise (docs/method.md). */
+constexpr double kRoughSample = 0.1;
+/** \brief Roughness at which automatic smoothing stops: that of the roughest clean samples. */
+constexpr double kSmoothedRoughness = 0.08;
+/** \brief Most smoothing passes before the triangulation. */
+constexpr unsigned kMaxSmoothingPasses = 8;
+
 /** \brief Which segments are reported as features. */
 enum class FeatureSide
 {
@@ -57,16 +73,16 @@ struct PreparationParameters
     * out (labelled kNoSegment, counted in FlowResult::outlier_points). Automatic: only when the
     * sample shows isolated points. */
   OutlierRemoval outliers = OutlierRemoval::Automatic;
-  /** Smoothing before the triangulation: passes projecting every vertex of a 3D sample onto the
-    * PCA plane of its 16 nearest neighbours (FlowResult::vertices are then the smoothed
-    * positions). 0 = off. For samples known to be noisy (a depth camera: 2); walls and parts
-    * thinner than a neighbourhood collapse, so it is not chosen automatically. At most
-    * kMaxSmoothingPasses; 2D samples are not smoothed (a warning says so). */
-  unsigned smoothing_passes = 0;
+  /** Smoothing of a 3D sample before the triangulation (FlowResult::vertices are then the smoothed
+    * positions): each pass moves every vertex along the normal of its 16 nearest neighbours by
+    * their offsets, weighted down where they lie more than the estimated noise (NoiseEstimate::sigma)
+    * off it, so that the two sides of a thin wall stay apart. Automatic: when the sample is rough,
+    * passes until it is as smooth as a clean sample. 2D samples are never smoothed. */
+  Smoothing smoothing = Smoothing::Automatic;
+  /** Passes of smoothing: the most (Automatic) or exactly this many (Always); 1 to
+    * kMaxSmoothingPasses. */
+  unsigned smoothing_passes = 6;
 };
-
-/** \brief Most smoothing passes before the triangulation. */
-constexpr unsigned kMaxSmoothingPasses = 8;
 
 /** \brief How stable manifolds merge into segments. All values are dimensionless; with
   * sampling_tolerance, stump_ratio, compact_size and min_part_share 0 the result is the paper's

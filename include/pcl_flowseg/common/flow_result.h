@@ -121,7 +121,15 @@ struct NoiseEstimate
   /** Share of those vertices whose 4th nearest neighbour lies more than kIsolatedDistance times
     * the median such distance away: isolated points, outliers. */
   double isolated_share = 0.0;
+  /** Median over the vertices used of the standard deviation of their kRoughnessNeighbours nearest
+    * neighbours along the neighbourhood's PCA normal, in sample spacings (the median distance to
+    * the 4th nearest neighbour): too few neighbours to reach across a thin wall, so unlike sigma it
+    * stays near 0 on every clean sample and tells noise (dimensionless). */
+  double roughness = 0.0;
 };
+
+/** \brief Neighbours of the roughness measure (NoiseEstimate::roughness). */
+constexpr std::size_t kRoughnessNeighbours = 8;
 
 /** \brief Most vertices whose neighbourhoods the noise estimate measures: enough for a stable
   * median and an isolated share to 0.025%, few enough to cost little next to the triangulation. */
@@ -169,6 +177,7 @@ struct FlowResult
   std::size_t non_finite_points = 0; ///< points skipped for NaN/Inf coordinates
   std::size_t duplicate_points = 0;  ///< points equal to an earlier point (labelled like it)
   std::size_t outlier_points = 0;    ///< points left out as outliers (label kNoSegment)
+  unsigned smoothing_passes = 0;     ///< smoothing passes applied to the vertices before the triangulation
 
   /** Coordinates of the unique finite points (the triangulation's vertices), input frame, in a
     * spatial order (along a Z-order curve), not in input order: use point_to_vertex. */

@@ -86,7 +86,10 @@ public:
   /** \brief pcl_flowseg::PreparationParameters::outliers. */
   inline void setOutlierRemoval (pcl_flowseg::OutlierRemoval mode) { params_.preparation.outliers = mode; }
   inline pcl_flowseg::OutlierRemoval getOutlierRemoval () const { return params_.preparation.outliers; }
-  /** \brief pcl_flowseg::PreparationParameters::smoothing_passes. */
+  /** \brief pcl_flowseg::PreparationParameters::smoothing (default Automatic). */
+  inline void setSmoothing (pcl_flowseg::Smoothing mode) { params_.preparation.smoothing = mode; }
+  inline pcl_flowseg::Smoothing getSmoothing () const { return params_.preparation.smoothing; }
+  /** \brief pcl_flowseg::PreparationParameters::smoothing_passes (default 6). */
   inline void setSmoothingPasses (unsigned passes) { params_.preparation.smoothing_passes = passes; }
   inline unsigned getSmoothingPasses () const { return params_.preparation.smoothing_passes; }
 

@@ -16,43 +16,42 @@
 namespace pcl_flowseg {
 namespace core {
 
+PlaneFit
+fitPlane (const std::vector<Eigen::Vector3d>& points, const int* ids, std::size_t count, int dimension)
+{
+  PlaneFit fit;
+  if (count < static_cast<std::size_t> (dimension + 1))
+    return fit;
+  for (std::size_t k = 0; k < count; ++k)
+    fit.mean += points[static_cast<std::size_t> (ids[k])];
+  fit.mean /= static_cast<double> (count);
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Eigen::Vector3d e = points[static_cast<std::size_t> (ids[k])] - fit.mean;
+    cov += e * e.transpose ();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es (cov);
+  // Surfaces: the normal is the smallest direction. Curves in a plane: the smallest eigenvalue
+  // belongs to the plane's normal, the next one to the curve's normal.
+  const int normal_axis = dimension == 3 ? 0 : 1;
+  const double top = dimension == 3 ? es.eigenvalues ().sum () : es.eigenvalues ()[1] + es.eigenvalues ()[2];
+  const double normal_spread = std::max (0.0, es.eigenvalues ()[normal_axis]);
+  fit.normal = es.eigenvectors ().col (normal_axis);
+  fit.variation = top > 0 ? normal_spread / top : 0.0;
+  fit.normal_variance = normal_spread / static_cast<double> (count);
+  return fit;
+}
+
 namespace {
 
-/** Calls \a visit (i, mean, normal, variation, normal_variance) with the PCA of the neighbourhood
-  * in every row i of \a hoods (normal_variance: the variance of the neighbours along the normal;
-  * a row too small for a fit gives a zero normal). */
+/** Calls \a visit (i, fit) with the plane fit of the neighbourhood in every row i of \a hoods. */
 template <typename Visit>
 void
 forEachNeighbourhood (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension, Visit visit)
 {
   for (std::size_t i = 0; i + 1 < hoods.first.size (); ++i)
-  {
-    const std::size_t begin = hoods.first[i], end = hoods.first[i + 1];
-    if (end - begin < static_cast<std::size_t> (dimension + 1))
-    {
-      visit (i, Eigen::Vector3d::Zero (), Eigen::Vector3d::Zero (), 0.0, 0.0);
-      continue;
-    }
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
-    for (std::size_t k = begin; k < end; ++k)
-      mean += points[static_cast<std::size_t> (hoods.ids[k])];
-    mean /= static_cast<double> (end - begin);
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      const Eigen::Vector3d e = points[static_cast<std::size_t> (hoods.ids[k])] - mean;
-      cov += e * e.transpose ();
-    }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es (cov);
-    // Surfaces: the normal is the smallest direction. Curves in a plane: the smallest eigenvalue
-    // belongs to the plane's normal, the next one to the curve's normal.
-    const int normal_axis = dimension == 3 ? 0 : 1;
-    const double top = dimension == 3 ? es.eigenvalues ().sum () : es.eigenvalues ()[1] + es.eigenvalues ()[2];
-    const double normal_spread = std::max (0.0, es.eigenvalues ()[normal_axis]);
-    const double variation = top > 0 ? normal_spread / top : 0.0;
-    visit (i, mean, Eigen::Vector3d (es.eigenvectors ().col (normal_axis)), variation,
-           normal_spread / static_cast<double> (end - begin));
-  }
+    visit (i, fitPlane (points, hoods.ids.data () + hoods.first[i], hoods.first[i + 1] - hoods.first[i], dimension));
 }
 
 /** The upper median of \a values (reordered); 0 when empty. */
@@ -111,8 +110,7 @@ double
 medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
 {
   std::vector<double> variation (hoods.first.size () - 1, 0.0);
-  forEachNeighbourhood (points, hoods, dimension,
-                        [&] (std::size_t i, const Eigen::Vector3d&, const Eigen::Vector3d&, double v, double) { variation[i] = v; });
+  forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const PlaneFit& fit) { variation[i] = fit.variation; });
   return median (variation);
 }
 
@@ -120,9 +118,8 @@ double
 medianNormalDeviation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
 {
   std::vector<double> deviation (hoods.first.size () - 1, 0.0);
-  forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const Eigen::Vector3d&, const Eigen::Vector3d&, double, double var) {
-    deviation[i] = std::sqrt (var);
-  });
+  forEachNeighbourhood (points, hoods, dimension,
+                        [&] (std::size_t i, const PlaneFit& fit) { deviation[i] = std::sqrt (fit.normal_variance); });
   return median (deviation);
 }
 
@@ -130,11 +127,45 @@ std::vector<Eigen::Vector3d>
 smoothPoints (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension)
 {
   std::vector<Eigen::Vector3d> out (points);
-  forEachNeighbourhood (points, hoods, dimension,
-                        [&] (std::size_t i, const Eigen::Vector3d& mean, const Eigen::Vector3d& normal, double, double) {
-    out[i] = points[i] - (points[i] - mean).dot (normal) * normal;
+  forEachNeighbourhood (points, hoods, dimension, [&] (std::size_t i, const PlaneFit& fit) {
+    out[i] = points[i] - (points[i] - fit.mean).dot (fit.normal) * fit.normal;
   });
   return out;
+}
+
+double
+medianReach (const Neighbourhoods& hoods)
+{
+  std::vector<double> reach (hoods.reach.begin (), hoods.reach.end ());
+  return median (reach);
+}
+
+double
+medianRoughness (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, std::size_t stride, std::size_t row_step,
+                 int dimension)
+{
+  const double spacing = medianReach (hoods);
+  const std::size_t rows = hoods.first.size () - 1;
+  if (!(spacing > 0.0) || rows == 0)
+    return 0.0;
+  std::vector<double> deviation;
+  deviation.reserve (rows / row_step + 1);
+  std::vector<std::pair<double, int>> row;
+  std::vector<int> nearest;
+  for (std::size_t r = 0; r < rows; r += row_step)
+  {
+    const Eigen::Vector3d& query = points[r * stride];
+    row.clear ();
+    for (std::size_t k = hoods.first[r]; k < hoods.first[r + 1]; ++k)
+      row.emplace_back ((points[static_cast<std::size_t> (hoods.ids[k])] - query).squaredNorm (), hoods.ids[k]);
+    const std::size_t n = std::min (kRoughnessNeighbours, row.size ());
+    std::partial_sort (row.begin (), row.begin () + static_cast<long> (n), row.end ());
+    nearest.clear ();
+    for (std::size_t k = 0; k < n; ++k)
+      nearest.push_back (row[k].second);
+    deviation.push_back (std::sqrt (fitPlane (points, nearest.data (), n, dimension).normal_variance));
+  }
+  return median (deviation) / spacing;
 }
 
 Status

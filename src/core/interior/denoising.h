@@ -24,8 +24,8 @@ constexpr int kNoiseNeighbours = 16;
 /** The neighbour whose distance tells an isolated point (Neighbourhoods::reach): the 4th nearest
   * other point, so that a few outliers close together are still seen. */
 constexpr int kIsolationNeighbour = 4;
-/** Upper bound on smoothing passes. */
-constexpr int kMaxSmoothingPasses = 4;
+/** Upper bound on the passes of the interior's own smoothing (of its working copy). */
+constexpr int kMaxDenoisingPasses = 4;
 
 /** \brief Neighbourhoods as compressed rows: the neighbours of the r-th query point are
   * ids[first[r]] .. ids[first[r+1]-1] (the point itself included); with every point a query, row r
@@ -42,6 +42,20 @@ struct Neighbourhoods
 Neighbourhoods
 nearestNeighbourhoods (const std::vector<Eigen::Vector3d>& points, std::size_t stride = 1);
 
+/** \brief The PCA plane (2D: line) of a set of points. */
+struct PlaneFit
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero (); ///< zero when the set is too small for a fit
+  double variation = 0.0;       ///< smallest PCA eigenvalue over the sum of the d largest
+  double normal_variance = 0.0; ///< variance of the points along the normal
+};
+
+/** \brief The PCA fit of the points \a ids[0 .. count-1] of \a points (surfaces: d = 3; curves in a
+  * plane: d = 2, the normal lies in the plane). */
+PlaneFit
+fitPlane (const std::vector<Eigen::Vector3d>& points, const int* ids, std::size_t count, int dimension);
+
 /** \brief Median over the rows of \a hoods of their surface variation: the smallest PCA eigenvalue of the
   * neighbourhood over the sum of the d largest (d = 3: surfaces; d = 2: curves in a plane, whose
   * third eigenvalue is zero). */
@@ -53,6 +67,17 @@ medianVariation (const std::vector<Eigen::Vector3d>& points, const Neighbourhood
   * a noisy sample, near 0 on a clean dense one. */
 double
 medianNormalDeviation (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension);
+
+/** \brief The median of Neighbourhoods::reach: the sample spacing. */
+double
+medianReach (const Neighbourhoods& hoods);
+
+/** \brief NoiseEstimate::roughness from every \a row_step-th row of \a hoods, whose row r holds the
+  * neighbours of point r * \a stride: the median standard deviation of the row's
+  * kRoughnessNeighbours points nearest to its point along their PCA normal, over medianReach. */
+double
+medianRoughness (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, std::size_t stride, std::size_t row_step,
+                 int dimension);
 
 /** \brief One smoothing pass: every point is projected onto the PCA plane (2D: line) of its
   * neighbourhood, through the neighbourhood's centroid. */

@@ -55,7 +55,7 @@ labelSmoothedSample (FlowResult& r, const InteriorParameters& params, const std:
 {
   const int d = r.dimension;
   std::vector<Eigen::Vector3d> points = r.vertices;
-  for (int it = 0; it < kMaxSmoothingPasses; ++it)
+  for (int it = 0; it < kMaxDenoisingPasses; ++it)
   {
     points = smoothPoints (points, hoods, d);
     ++r.interior.smoothing_passes;
