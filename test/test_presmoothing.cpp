@@ -139,6 +139,23 @@ TEST (Presmoothing, ThinWallKeepsItsTwoSides)
   EXPECT_LT (std::sqrt (spread / 2000.0), 0.8 * sigma) << "the noise is reduced";
 }
 
+TEST (Presmoothing, TinyNoiseScaleLeavesTheVerticesFinite)
+{
+  std::vector<Eigen::Vector3d> pts = noisySlabFaces (500, 0.05, 0.003);
+  NoiseEstimate noise;
+  noise.sigma = 1e-300;
+  PreparationParameters params;
+  params.smoothing = Smoothing::Always;
+  params.smoothing_passes = 2;
+  const std::vector<Eigen::Vector3d> before = pts;
+  ASSERT_EQ (core::smoothSample (pts, noise, params), 2u);
+  for (std::size_t i = 0; i < pts.size (); ++i)
+  {
+    ASSERT_TRUE (pts[i].allFinite ()) << i;
+    EXPECT_LT ((pts[i] - before[i]).norm (), 1e-12) << "offsets far beyond the scale weigh nothing";
+  }
+}
+
 TEST (Presmoothing, PlanarSampleIsNotSmoothedAndSaysSoWhenAsked)
 {
   const std::vector<Eigen::Vector3d> pts = shapeSample ("hand2d", 800);

@@ -26,7 +26,6 @@ std::vector<Eigen::Vector3d>
 offsetWeightedPass (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, double offset_scale)
 {
   std::vector<Eigen::Vector3d> out (points);
-  const double inverse = 1.0 / (2.0 * offset_scale * offset_scale);
   parallelFor (points.size (), [&] (std::size_t i) {
     const int* ids = hoods.ids.data () + hoods.first[i];
     const std::size_t count = hoods.first[i + 1] - hoods.first[i];
@@ -35,7 +34,8 @@ offsetWeightedPass (const std::vector<Eigen::Vector3d>& points, const Neighbourh
     for (std::size_t k = 0; k < count; ++k)
     {
       const double offset = (points[static_cast<std::size_t> (ids[k])] - points[i]).dot (normal);
-      const double weight = std::exp (-offset * offset * inverse);
+      const double z = offset / offset_scale; // offset_scale > 0: finite or +-inf, never NaN
+      const double weight = std::exp (-0.5 * z * z);
       sum += weight * offset;
       weights += weight;
     }
