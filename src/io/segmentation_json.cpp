@@ -36,26 +36,31 @@ sideName (FeatureSide side)
   return side == FeatureSide::Interior ? "interior" : side == FeatureSide::Exterior ? "exterior" : "both";
 }
 
+/** An Automatic / Off / Always mode (OutlierRemoval, Smoothing, Denoising) as a quoted JSON name. */
+template <typename Mode>
+const char*
+modeJson (Mode mode)
+{
+  return mode == Mode::Automatic ? "\"auto\"" : mode == Mode::Off ? "\"off\"" : "\"always\"";
+}
+
 /** The parameters as one JSON object, in the groups of FlowParameters. */
 std::string
 parametersJson (const FlowParameters& p)
 {
   const DimensionMode d = p.preparation.dimension;
-  const Denoising n = p.interior.denoising;
   std::string s = "{\"preparation\": {\"dimension\": ";
   s += d == DimensionMode::Automatic ? "\"auto\"" : d == DimensionMode::Planar ? "2" : "3";
   s += ", \"planar_tolerance\": " + num (p.preparation.planar_tolerance) + ", \"outliers\": ";
-  const OutlierRemoval o = p.preparation.outliers;
-  s += o == OutlierRemoval::Automatic ? "\"auto\"" : o == OutlierRemoval::Off ? "\"off\"" : "\"always\"";
-  const Smoothing m = p.preparation.smoothing;
+  s += modeJson (p.preparation.outliers);
   s += ", \"smoothing\": ";
-  s += m == Smoothing::Automatic ? "\"auto\"" : m == Smoothing::Off ? "\"off\"" : "\"always\"";
+  s += modeJson (p.preparation.smoothing);
   s += ", \"smoothing_passes\": " + std::to_string (p.preparation.smoothing_passes) + "}";
   s += ", \"merge\": {\"rho\": " + num (p.merge.rho) + ", \"sampling_tolerance\": " + num (p.merge.sampling_tolerance) +
        ", \"stump_ratio\": " + num (p.merge.stump_ratio) + ", \"compact_rho\": " + num (p.merge.compact_rho) +
        ", \"compact_size\": " + num (p.merge.compact_size) + ", \"min_part_share\": " + num (p.merge.min_part_share) + "}";
   s += ", \"interior\": {\"separate\": " + std::string (jsonBool (p.interior.separate)) + ", \"denoising\": ";
-  s += n == Denoising::Automatic ? "\"auto\"" : n == Denoising::Off ? "\"off\"" : "\"always\"";
+  s += modeJson (p.interior.denoising);
   s += ", \"viewpoint\": " + (p.interior.viewpoint ? vec (*p.interior.viewpoint, 3) : std::string ("null")) + "}";
   s += ", \"features\": \"" + std::string (sideName (p.features)) + "\"";
   s += ", \"execution\": {\"threads\": " + std::to_string (p.execution.threads) +
