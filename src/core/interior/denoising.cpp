@@ -142,9 +142,8 @@ medianReach (const Neighbourhoods& hoods)
 
 double
 medianRoughness (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, std::size_t stride, std::size_t row_step,
-                 int dimension)
+                 int dimension, double spacing)
 {
-  const double spacing = medianReach (hoods);
   const std::size_t rows = hoods.first.size () - 1;
   if (!(spacing > 0.0) || rows == 0)
     return 0.0;

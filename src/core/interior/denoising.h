@@ -74,10 +74,11 @@ medianReach (const Neighbourhoods& hoods);
 
 /** \brief NoiseEstimate::roughness from every \a row_step-th row of \a hoods, whose row r holds the
   * neighbours of point r * \a stride: the median standard deviation of the row's
-  * kRoughnessNeighbours points nearest to its point along their PCA normal, over medianReach. */
+  * kRoughnessNeighbours points nearest to its point along their PCA normal, over \a spacing
+  * (medianReach of \a hoods; 0 when it is not positive). */
 double
 medianRoughness (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, std::size_t stride, std::size_t row_step,
-                 int dimension);
+                 int dimension, double spacing);
 
 /** \brief One smoothing pass: every point is projected onto the PCA plane (2D: line) of its
   * neighbourhood, through the neighbourhood's centroid. */

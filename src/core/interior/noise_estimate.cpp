@@ -37,8 +37,9 @@ estimateNoise (const std::vector<Eigen::Vector3d>& vertices, int dimension)
   const std::size_t query_stride = (used.size () + kNoiseEstimatePoints - 1) / kNoiseEstimatePoints;
   const Neighbourhoods hoods = nearestNeighbourhoods (used, query_stride);
   estimate.sigma = medianNormalDeviation (used, hoods, dimension);
-  estimate.roughness = medianRoughness (used, hoods, query_stride, 1, dimension);
-  const double limit = kIsolatedDistance * medianReach (hoods);
+  const double spacing = medianReach (hoods);
+  estimate.roughness = medianRoughness (used, hoods, query_stride, 1, dimension, spacing);
+  const double limit = kIsolatedDistance * spacing;
   // A zero median (points closer than float precision) tells nothing: none counts as isolated.
   const auto isolated = limit > 0.0 ? std::count_if (hoods.reach.begin (), hoods.reach.end (), [&] (float r) { return r > limit; }) : 0;
   estimate.isolated_share = static_cast<double> (isolated) / static_cast<double> (hoods.reach.size ());

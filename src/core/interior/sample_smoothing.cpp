@@ -56,12 +56,13 @@ smoothSample (std::vector<Eigen::Vector3d>& vertices, const NoiseEstimate& noise
   if (!(noise.sigma > 0.0) || vertices.size () <= static_cast<std::size_t> (kNoiseNeighbours))
     return 0;
   const Neighbourhoods hoods = nearestNeighbourhoods (vertices);
+  const double spacing = medianReach (hoods);
   unsigned passes = 0;
   while (passes < params.smoothing_passes)
   {
     vertices = offsetWeightedPass (vertices, hoods, noise.sigma);
     ++passes;
-    if (automatic && medianRoughness (vertices, hoods, 1, kRoughnessRowStep, 3) <= kSmoothedRoughness)
+    if (automatic && medianRoughness (vertices, hoods, 1, kRoughnessRowStep, 3, spacing) <= kSmoothedRoughness)
       break;
   }
   return passes;
