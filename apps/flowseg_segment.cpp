@@ -126,8 +126,9 @@ printSummary (const Options& o, const pcl_flowseg::FlowResult& r, double read_ms
                 "%zu segments after merging with rho=%g (%zu interior), %zu features reported (%zu significant), %zu points unlabelled\n",
                 r.dimension, r.input_points, r.non_finite_points, r.duplicate_points, r.outlier_points, r.cells.size (), r.maxima.size (),
                 r.segments.size (), r.parameters.merge.rho, interior, r.features.size (), significant, r.unlabelledPoints ());
-  std::fprintf (stderr, "noise: estimated sigma %.4g (%.3f%% of the bounding-box diagonal), roughness %.3f, %.3f%% of the points isolated, %u smoothing pass(es) before the triangulation\n",
-                r.noise.sigma, 100.0 * r.noise.share, r.noise.roughness, 100.0 * r.noise.isolated_share, r.smoothing_passes);
+  std::fprintf (stderr, "noise: estimated sigma %.4g (%.3f%% of the bounding-box diagonal), roughness %.3f, %.3f%% of the points isolated, %.3f%% detached, %u smoothing pass(es) before the triangulation\n",
+                r.noise.sigma, 100.0 * r.noise.share, r.noise.roughness, 100.0 * r.noise.isolated_share,
+                100.0 * r.noise.detached_share, r.smoothing_passes);
   if (r.interior.computed)
     std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s, %zu samples off the boundary, %d smoothing pass(es)\n",
                   r.interior.inside_volume, r.interior.inside_cells, r.interior.boundary_facets,

@@ -137,6 +137,7 @@ expect "scan viewpoint malformed" 2 "scan-from" -- "$smp" "$work/tet.off" --scan
 expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off" -n 2000 --outliers 0.02 -o "$work/out.pcd"
 expect "outliers found and left out" 0 "left out as outliers" -- "$seg" "$work/out.pcd" -o "$work/out"
 grep -q '"outlier_points": [1-9]' "$work/out.json"; check "the JSON counts the outliers" $?
+grep -q '"detached_share": 0\.0*[1-9]' "$work/out.json"; check "the JSON reports the detached share" $?
 expect "outliers kept on request" 0 " 0 outliers)" -- "$seg" "$work/out.pcd" --outliers off -o "$work/out"
 expect "smoothing forced" 0 ", 2 smoothing pass\(es\)" -- "$seg" "$work/out.pcd" --smooth on --smooth-passes 2 -o "$work/smooth"
 grep -q '^  "smoothing_passes": 2,' "$work/smooth.json"; check "the JSON records the smoothing passes made" $?

@@ -54,7 +54,7 @@ addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
             std::vector<std::pair<std::string, pcl_flowseg::FeatureSide>>{{"interior", pcl_flowseg::FeatureSide::Interior},
                                                                            {"exterior", pcl_flowseg::FeatureSide::Exterior},
                                                                            {"both", pcl_flowseg::FeatureSide::Both}});
-  p.choice ("--outliers", "MODE", "auto | off | on: leave out isolated points (PCL's statistical\noutlier removal); auto: when the sample shows isolated points",
+  p.choice ("--outliers", "MODE", "auto | off | on: leave out outliers (PCL's statistical outlier\nremoval, then points off the surface their neighbours sample);\nauto: when the sample shows isolated or detached points",
             params.preparation.outliers,
             std::vector<std::pair<std::string, pcl_flowseg::OutlierRemoval>>{{"auto", pcl_flowseg::OutlierRemoval::Automatic},
                                                                               {"off", pcl_flowseg::OutlierRemoval::Off},

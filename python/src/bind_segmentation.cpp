@@ -269,7 +269,7 @@ bindResult (py::module_& m)
       .def_property_readonly ("non_finite_points", [] (const Segmentation& s) { return s.result->non_finite_points; })
       .def_property_readonly ("duplicate_points", [] (const Segmentation& s) { return s.result->duplicate_points; })
       .def_property_readonly ("outlier_points", [] (const Segmentation& s) { return s.result->outlier_points; },
-                              "Points left out as isolated (label -1).")
+                              "Points left out as outliers, isolated or detached from the surface (label -1).")
       .def_property_readonly ("unlabelled_points", [] (const Segmentation& s) { return s.result->unlabelledPoints (); })
       .def_property_readonly ("noise", [] (const Segmentation& s) {
         py::dict d;
@@ -277,11 +277,13 @@ bindResult (py::module_& m)
         d["share"] = s.result->noise.share;
         d["roughness"] = s.result->noise.roughness;
         d["isolated_share"] = s.result->noise.isolated_share;
+        d["detached_share"] = s.result->noise.detached_share;
         d["points_used"] = s.result->noise.points_used;
         return d;
       }, "The sample's estimated noise: sigma (input units), share (of the bounding-box diagonal), roughness "
          "(in sample spacings; above 0.1 automatic smoothing acts), isolated_share (share of the points far from "
-         "their neighbours), points_used.")
+         "their neighbours), detached_share (share lying off the surface their neighbours sample; either share "
+         "above its threshold starts the automatic outlier removal), points_used.")
       .def_property_readonly ("smoothing_passes", [] (const Segmentation& s) { return s.result->smoothing_passes; },
                               "Smoothing passes made before the triangulation (0: the vertices are the points).")
       .def_property_readonly ("interior", [] (const Segmentation& s) { return interiorReport (s.result->interior); },

@@ -164,6 +164,18 @@ def test_isolated_points_are_left_out_and_counted():
     assert kept.outlier_points == 0 and kept.noise["isolated_share"] == seg.noise["isolated_share"]
 
 
+def test_outliers_inside_the_shape_are_detached_and_left_out():
+    points, _ = fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))
+    lo, hi = points.min(0), points.max(0)
+    inner = lo + (hi - lo) * np.random.default_rng(4).uniform(0.0, 1.0, size=(40, 3))
+    seg = fs.segment(np.vstack([points, inner]))
+    assert seg.noise["detached_share"] > 0.004
+    assert (seg.labels[len(points):] == -1).sum() >= 30
+    assert (seg.labels[:len(points)] == -1).sum() <= 10
+    clean = fs.segment(points)
+    assert clean.noise["detached_share"] == 0.0 and clean.outlier_points == 0
+
+
 def test_noisy_samples_are_smoothed_automatically():
     points, _ = fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))
     clean = fs.segment(points)

@@ -168,7 +168,8 @@ writeSegmentationJson (const std::string& path, const FlowResult& r, const RunIn
     out << "{\n";
     writeCounts (out, r, info);
     out << "  \"noise\": {\"sigma\": " << num (r.noise.sigma) << ", \"share\": " << num (r.noise.share)
-        << ", \"isolated_share\": " << num (r.noise.isolated_share) << ", \"roughness\": " << num (r.noise.roughness)
+        << ", \"isolated_share\": " << num (r.noise.isolated_share)
+        << ", \"detached_share\": " << num (r.noise.detached_share) << ", \"roughness\": " << num (r.noise.roughness)
         << ", \"points_used\": " << r.noise.points_used
         << "},\n";
     writeInterior (out, r.interior);

@@ -8,6 +8,7 @@
 #include "core/delaunay/delaunay_cells.h"
 #include "core/flow/manifold_summary.h"
 #include "core/flow/stable_manifolds.h"
+#include "core/interior/detached_points.h"
 #include "core/interior/facet_agreement.h"
 #include "core/interior/interior_labelling.h"
 #include "core/interior/noise_estimate.h"
@@ -87,7 +88,7 @@ noiseStage (const core::PreparedPoints& prepared, FlowResult& result)
   result.timings.noise_ms = millisecondsSince (start);
 }
 
-/** Whether this run leaves out isolated points: forced, off, or by the sample's isolated share. */
+/** Whether this run leaves out outliers: forced, off, or by the sample's isolated or detached share. */
 bool
 wantsOutlierRemoval (const PreparationParameters& params, const NoiseEstimate& noise)
 {
@@ -97,11 +98,15 @@ wantsOutlierRemoval (const PreparationParameters& params, const NoiseEstimate& n
     case OutlierRemoval::Off: return false;
     case OutlierRemoval::Automatic: break;
   }
-  const double isolated = noise.isolated_share * static_cast<double> (noise.points_used);
-  return noise.isolated_share > kIsolatedShare && isolated + 0.5 >= static_cast<double> (kIsolatedMinimum);
+  const auto enough = [&] (double share, double threshold) {
+    return share > threshold && share * static_cast<double> (noise.points_used) + 0.5 >= static_cast<double> (kIsolatedMinimum);
+  };
+  return enough (noise.isolated_share, kIsolatedShare) || enough (noise.detached_share, kDetachedShare);
 }
 
-/** PCL's StatisticalOutlierRemoval on the vertices when wanted; counted and warned about. */
+/** When wanted, PCL's StatisticalOutlierRemoval on the vertices (points far from all others), then
+  * the vertices still detached from the surface their neighbours sample (outliers near it, which
+  * break the big interior balls); counted and warned about. */
 void
 outlierStage (const Run& run, core::PreparedPoints& prepared)
 {
@@ -110,9 +115,13 @@ outlierStage (const Run& run, core::PreparedPoints& prepared)
     return;
   const auto start = Clock::now ();
   result.outlier_points = core::removeOutliers (prepared);
+  std::vector<char> keep = core::detachedPoints (prepared.vertices, prepared.dimension);
+  for (char& k : keep)
+    k = !k;
+  result.outlier_points += core::removeVertices (prepared, keep);
   if (result.outlier_points > 0)
     result.warnings.push_back (std::to_string (result.outlier_points) +
-                               " isolated point(s) left out as outliers (no segment); --outliers off keeps them");
+                               " isolated or detached point(s) left out as outliers (no segment); --outliers off keeps them");
   result.timings.preparation_ms += millisecondsSince (start);
 }
 

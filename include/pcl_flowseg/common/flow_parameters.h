@@ -29,10 +29,10 @@ enum class Denoising
   Always = 2     ///< always (at least one smoothing pass)
 };
 
-/** \brief Whether isolated points are removed before the triangulation. */
+/** \brief Whether outliers are removed before the triangulation. */
 enum class OutlierRemoval
 {
-  Automatic = 0, ///< when the sample shows isolated points (NoiseEstimate::isolated_share)
+  Automatic = 0, ///< when the sample shows isolated or detached points (NoiseEstimate::isolated_share, ::detached_share)
   Off = 1,       ///< never: every point is a vertex
   Always = 2     ///< always
 };
@@ -69,9 +69,10 @@ struct PreparationParameters
   /** Automatic mode chooses 2D when the spread of the points normal to their best-fit plane is at
     * most this share of the bounding-box diagonal (dimensionless, >= 0). */
   double planar_tolerance = 1e-9;
-  /** Outliers: points PCL's StatisticalOutlierRemoval finds far from their neighbours are left
-    * out (labelled kNoSegment, counted in FlowResult::outlier_points). Automatic: only when the
-    * sample shows isolated points. */
+  /** Outliers: points PCL's StatisticalOutlierRemoval finds far from their neighbours, then points
+    * still detached from the surface (2D: curve) their neighbours sample, are left out (labelled
+    * kNoSegment, counted in FlowResult::outlier_points). Automatic: only when the sample shows
+    * isolated or detached points. */
   OutlierRemoval outliers = OutlierRemoval::Automatic;
   /** Smoothing of a 3D sample before the triangulation (FlowResult::vertices are then the smoothed
     * positions): each pass moves every vertex along the normal of its 16 nearest neighbours by

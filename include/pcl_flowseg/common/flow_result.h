@@ -121,6 +121,10 @@ struct NoiseEstimate
   /** Share of those vertices whose 4th nearest neighbour lies more than kIsolatedDistance times
     * the median such distance away: isolated points, outliers. */
   double isolated_share = 0.0;
+  /** Share of those vertices that lie off the PCA plane (2D: line) of their 15 nearest other
+    * vertices by more than a sample spacing plus twice those neighbours' standard deviation along
+    * its normal: points detached from the surface, outliers near it included. */
+  double detached_share = 0.0;
   /** Median over the vertices used of the standard deviation of their kRoughnessNeighbours nearest
     * neighbours along the neighbourhood's PCA normal, in sample spacings (the median distance to
     * the 4th nearest neighbour): too few neighbours to reach across a thin wall, so unlike sigma it
@@ -139,8 +143,11 @@ constexpr std::size_t kNoiseEstimatePoints = 4000;
 constexpr double kIsolatedDistance = 8.0;
 /** \brief Share of isolated vertices above which automatic outlier removal acts. */
 constexpr double kIsolatedShare = 0.001;
-/** \brief Fewest isolated vertices on which automatic outlier removal acts: in a small sample one
-  * or two are more likely a gap in the sampling than outliers. */
+/** \brief Share of detached vertices (NoiseEstimate::detached_share) above which automatic outlier
+  * removal acts. */
+constexpr double kDetachedShare = 0.004;
+/** \brief Fewest isolated (or detached) vertices on which automatic outlier removal acts: in a small
+  * sample one or two are more likely a gap in the sampling than outliers. */
 constexpr std::size_t kIsolatedMinimum = 3;
 
 /** \brief What the interior/exterior separation found. */

@@ -38,6 +38,7 @@ fitPlane (const std::vector<Eigen::Vector3d>& points, const int* ids, std::size_
   const double top = dimension == 3 ? es.eigenvalues ().sum () : es.eigenvalues ()[1] + es.eigenvalues ()[2];
   const double normal_spread = std::max (0.0, es.eigenvalues ()[normal_axis]);
   fit.normal = es.eigenvectors ().col (normal_axis);
+  fit.direction = es.eigenvectors ().col (2);
   fit.variation = top > 0 ? normal_spread / top : 0.0;
   fit.normal_variance = normal_spread / static_cast<double> (count);
   return fit;

@@ -47,6 +47,10 @@ struct PlaneFit
 {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
   Eigen::Vector3d normal = Eigen::Vector3d::Zero (); ///< zero when the set is too small for a fit
+  /** The direction of largest spread: a curve's tangent. On a straight piece of a curve in a plane
+    * the plane's and the curve's normals share one eigenvalue (0) and \a normal may be either; the
+    * part of an in-plane offset across this direction is the offset from the curve. */
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero ();
   double variation = 0.0;       ///< smallest PCA eigenvalue over the sum of the d largest
   double normal_variance = 0.0; ///< variance of the points along the normal
 };

@@ -5,6 +5,7 @@
 #include "core/interior/noise_estimate.h"
 
 #include "core/interior/denoising.h"
+#include "core/interior/detached_points.h"
 
 #include <algorithm>
 
@@ -15,6 +16,30 @@ namespace {
 /** Most vertices the neighbours are looked for among: a subset thins the sample evenly, the
   * neighbourhoods stay small against the shape's features. */
 constexpr std::size_t kNoiseIndexPoints = 50000;
+
+/** Share of the rows of \a hoods (row r: point r * \a stride of \a points) whose point lies off the
+  * plane of its other neighbours (liesOffNeighbours at the sample \a spacing). */
+double
+detachedShare (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, std::size_t stride, double spacing,
+               int dimension)
+{
+  const std::size_t rows = hoods.reach.size ();
+  if (rows == 0 || !(spacing > 0.0))
+    return 0.0;
+  std::size_t detached = 0;
+  std::vector<int> others;
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    const std::size_t point = r * stride;
+    others.clear ();
+    for (std::size_t k = hoods.first[r]; k < hoods.first[r + 1]; ++k)
+      if (hoods.ids[k] != static_cast<int> (point))
+        others.push_back (hoods.ids[k]);
+    detached += liesOffNeighbours (points, point, others.data (), others.size (), spacing, dimension);
+  }
+  return static_cast<double> (detached) / static_cast<double> (rows);
+}
+
 } // namespace
 
 NoiseEstimate
@@ -43,6 +68,7 @@ estimateNoise (const std::vector<Eigen::Vector3d>& vertices, int dimension)
   // A zero median (points closer than float precision) tells nothing: none counts as isolated.
   const auto isolated = limit > 0.0 ? std::count_if (hoods.reach.begin (), hoods.reach.end (), [&] (float r) { return r > limit; }) : 0;
   estimate.isolated_share = static_cast<double> (isolated) / static_cast<double> (hoods.reach.size ());
+  estimate.detached_share = detachedShare (used, hoods, query_stride, spacing, dimension);
   const double diagonal = (hi - lo).norm ();
   estimate.share = diagonal > 0.0 ? estimate.sigma / diagonal : 0.0;
   estimate.points_used = hoods.reach.size ();

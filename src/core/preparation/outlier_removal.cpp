@@ -47,7 +47,13 @@ removeOutliers (PreparedPoints& prepared)
   const std::size_t n = prepared.vertices.size ();
   if (n <= static_cast<std::size_t> (kOutlierNeighbours))
     return 0;
-  const std::vector<char> keep = keptVertices (prepared.vertices);
+  return removeVertices (prepared, keptVertices (prepared.vertices));
+}
+
+std::size_t
+removeVertices (PreparedPoints& prepared, const std::vector<char>& keep)
+{
+  const std::size_t n = prepared.vertices.size ();
   const auto kept_count = static_cast<std::size_t> (std::count (keep.begin (), keep.end (), 1));
   if (kept_count == n || kept_count < static_cast<std::size_t> (prepared.dimension) + 2)
     return 0; // nothing to remove, or too little would be left: keep the sample as it is

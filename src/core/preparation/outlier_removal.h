@@ -7,6 +7,7 @@
 #include "core/preparation/point_preparation.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace pcl_flowseg {
 namespace core {
@@ -22,6 +23,10 @@ constexpr double kOutlierDeviations = 3.0;
   * Keeps every vertex when fewer than dimension + 2 would remain. Returns the input points left out. */
 std::size_t
 removeOutliers (PreparedPoints& prepared);
+
+/** \brief Removes the vertices whose \a keep flag is 0 (see removeOutliers). */
+std::size_t
+removeVertices (PreparedPoints& prepared, const std::vector<char>& keep);
 
 } // namespace core
 } // namespace pcl_flowseg
