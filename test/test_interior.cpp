@@ -2,10 +2,15 @@
  * Interior/exterior separation: labels of generated closed shapes against their ground truth.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "core/interior/boundary_measure.h"
+#include "core/interior/manifold_repair.h"
 #include "test_support.h"
+
+#include <pcl_flowseg/io/point_io.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -75,6 +80,8 @@ TEST_P (GeneratedInterior, LabelsMatchTheShapeAndTheBoundaryIsClosed)
   const FlowResult r = segmentWith (sampleBoundary (shape, shape.dimension == 2 ? 1500 : 4000, 5));
   ASSERT_TRUE (r.interior.computed);
   EXPECT_TRUE (r.interior.closed);
+  if (shape.dimension == 3)
+    EXPECT_TRUE (r.interior.manifold) << r.interior.nonmanifold_edges << " edges, " << r.interior.nonmanifold_vertices << " vertices";
   EXPECT_EQ (r.interior.smoothing_passes, 0) << "a clean sample is not smoothed";
   EXPECT_LT (r.interior.vertices_off_boundary, r.vertices.size () / 100) << "samples lie on the surface";
   const double share = agreement (r, [&] (const V& p) { return shape.contains (p); });
@@ -89,6 +96,79 @@ TEST_P (GeneratedInterior, LabelsMatchTheShapeAndTheBoundaryIsClosed)
 
 INSTANTIATE_TEST_SUITE_P (Shapes, GeneratedInterior,
                           ::testing::Values ("dumbbell2d", "star2d", "hand2d", "dumbbell3d", "snowman3d", "animal3d"));
+
+namespace {
+
+/** An outside cell of \a r and one of its vertices on the boundary such that no facet of the cell
+  * holding that vertex is shared with an inside cell: labelling it inside pinches the boundary
+  * there. False when there is none. */
+bool
+findPinch (const FlowResult& r, std::size_t& cell, int& vertex)
+{
+  std::vector<char> on_boundary (r.vertices.size (), 0);
+  for (const FlowCell& c : r.cells)
+    if (c.inside == 1)
+      for (int v : c.vertices)
+        on_boundary[static_cast<std::size_t> (v)] = 1;
+  for (std::size_t k = 0; k < r.cells.size (); ++k)
+  {
+    const FlowCell& c = r.cells[k];
+    if (c.inside != 0 || std::find (c.neighbors.begin (), c.neighbors.end (), kInfiniteCell) != c.neighbors.end ())
+      continue;
+    for (int i = 0; i < 4; ++i)
+    {
+      bool touches = false; // an inside cell across a facet holding vertices[i]
+      for (int j = 0; j < 4; ++j)
+        touches |= j != i && r.cells[static_cast<std::size_t> (c.neighbors[j])].inside == 1;
+      if (!touches && on_boundary[static_cast<std::size_t> (c.vertices[i])])
+      {
+        cell = k;
+        vertex = c.vertices[i];
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+} // namespace
+
+TEST (Interior, APinchedBoundaryIsMadeAManifoldAgain)
+{
+  FlowResult r = segmentWith (shapeSample ("snowman3d", 3000));
+  ASSERT_TRUE (r.interior.manifold);
+  ASSERT_TRUE (core::nonmanifoldVertices (r).empty ());
+  std::size_t cell = 0;
+  int vertex = -1;
+  ASSERT_TRUE (findPinch (r, cell, vertex));
+  r.cells[cell].inside = 1; // touches the inside only at the vertex
+  const std::vector<int> bad = core::nonmanifoldVertices (r);
+  EXPECT_NE (std::find (bad.begin (), bad.end (), vertex), bad.end ()) << "the pinch is seen";
+  const std::size_t relabelled = core::repairManifold (r);
+  EXPECT_GE (relabelled, 1u);
+  EXPECT_LE (relabelled, 20u) << "a local change";
+  EXPECT_TRUE (core::nonmanifoldVertices (r).empty ());
+  core::measureBoundary (r);
+  EXPECT_TRUE (r.interior.closed);
+  EXPECT_TRUE (r.interior.manifold);
+  EXPECT_EQ (core::repairManifold (r), 0u) << "nothing left to repair";
+}
+
+TEST (Interior, ManifoldRepairCanBeSwitchedOff)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud; // the shipped sample: its labelling pinches the boundary once
+  ASSERT_TRUE (loadPointCloud (std::string (PCL_FLOWSEG_SOURCE_DIR) + "/samples/animal3d.pcd", cloud).ok);
+  std::vector<V> pts;
+  for (const auto& p : cloud)
+    pts.emplace_back (p.x, p.y, p.z);
+  const FlowResult repaired = segmentWith (pts);
+  const FlowResult raw = segmentWith (pts, [] (FlowParameters& p) { p.interior.manifold_repair = false; });
+  EXPECT_TRUE (repaired.interior.manifold);
+  EXPECT_GT (repaired.interior.repaired_cells, 0u);
+  EXPECT_FALSE (raw.interior.manifold) << "this sample's labelling pinches its boundary";
+  EXPECT_EQ (raw.interior.repaired_cells, 0u);
+  EXPECT_LT (std::abs (repaired.interior.inside_volume - raw.interior.inside_volume), 1e-3 * raw.interior.inside_volume);
+}
 
 TEST (Interior, CurvesWithSeveralComponentsAndHoles)
 {

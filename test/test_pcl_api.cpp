@@ -248,6 +248,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   seg.setSmoothing (pcl_flowseg::Smoothing::Always);
   seg.setSmoothingPasses (1);
   seg.setSeparateInterior (true);
+  seg.setManifoldRepair (false);
   seg.setDenoising (pcl_flowseg::Denoising::Off);
   seg.setFeatureSide (pcl_flowseg::FeatureSide::Both);
   seg.setNumberOfThreads (1);
@@ -265,6 +266,8 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   EXPECT_EQ (p.preparation.smoothing, pcl_flowseg::Smoothing::Always);
   EXPECT_EQ (p.preparation.smoothing_passes, 1u);
   EXPECT_EQ (p.interior.denoising, pcl_flowseg::Denoising::Off);
+  EXPECT_FALSE (p.interior.manifold_repair);
+  EXPECT_FALSE (seg.getManifoldRepair ());
   EXPECT_EQ (p.features, pcl_flowseg::FeatureSide::Both);
   EXPECT_EQ (p.execution.threads, 1u);
   EXPECT_EQ (p.execution.memory_limit, std::size_t (1) << 33);

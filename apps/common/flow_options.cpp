@@ -69,6 +69,8 @@ addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
   pcl_flowseg::InteriorParameters* in = &params.interior;
   p.action ("--no-interior", "skip interior/exterior separation: the paper's raw segmentation of\nthe whole convex hull, every segment reported",
             [in] () { in->separate = false; });
+  p.action ("--no-manifold-repair", "keep the interior/exterior boundary as the labelling left it, also\nwhere it is not a manifold (3D)",
+            [in] () { in->manifold_repair = false; });
   p.choice ("--denoise", "MODE", "auto | off | on: smooth noisy samples before separating interior\nand exterior",
             params.interior.denoising,
             std::vector<std::pair<std::string, pcl_flowseg::Denoising>>{{"auto", pcl_flowseg::Denoising::Automatic},

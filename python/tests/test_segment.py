@@ -47,7 +47,7 @@ def test_parameters_round_trip():
     points, _ = fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))
     given = dict(rho=1.3, sampling_tolerance=0.25, stump_ratio=0.0, compact_rho=1.5, compact_size=0.0, min_part_share=0.01,
                  denoising="off", outliers="off", smoothing="always", smoothing_passes=1, features="both", threads=1, dimension="spatial", planar_tolerance=1e-6,
-                 viewpoint=(0.0, 0.0, 10.0), memory_limit=8 << 30, separate=True, significance=0.05)
+                 viewpoint=(0.0, 0.0, 10.0), memory_limit=8 << 30, separate=True, manifold_repair=False, significance=0.05)
     seg = fs.segment(points, **given)
     used = seg.parameters
     for name, value in given.items():
@@ -107,7 +107,7 @@ def test_bad_arrays_raise_value_error(array, message):
 BAD_PARAMETERS = [
     dict(rho=-1), dict(rho=float("nan")), dict(rho="big"), dict(rho=True), dict(threads=-1), dict(threads=1.5),
     dict(threads=10 ** 30), dict(threads=5000), dict(dimension="cubic"), dict(dimension=3), dict(viewpoint=(1, 2)), dict(viewpoint="up"),
-    dict(viewpoint=(0, 0, float("inf"))), dict(viewpoint=b"abc"), dict(viewpoint=[0, 0, "z"]), dict(rho=[1.0]), dict(features="outside"), dict(denoising="maybe"), dict(outliers="sometimes"), dict(smoothing_passes=99), dict(smoothing_passes=-1), dict(smoothing_passes=0), dict(smoothing="sometimes"), dict(separate=1),
+    dict(viewpoint=(0, 0, float("inf"))), dict(viewpoint=b"abc"), dict(viewpoint=[0, 0, "z"]), dict(rho=[1.0]), dict(features="outside"), dict(denoising="maybe"), dict(outliers="sometimes"), dict(smoothing_passes=99), dict(smoothing_passes=-1), dict(smoothing_passes=0), dict(smoothing="sometimes"), dict(separate=1), dict(manifold_repair="yes"),
     dict(significance=1.5), dict(memory_limit=-5), dict(stump_ratio=0.5), dict(compact_size=-1),
 ]
 

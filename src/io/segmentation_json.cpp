@@ -61,6 +61,7 @@ parametersJson (const FlowParameters& p)
        ", \"compact_size\": " + num (p.merge.compact_size) + ", \"min_part_share\": " + num (p.merge.min_part_share) + "}";
   s += ", \"interior\": {\"separate\": " + std::string (jsonBool (p.interior.separate)) + ", \"denoising\": ";
   s += modeJson (p.interior.denoising);
+  s += ", \"manifold_repair\": " + std::string (jsonBool (p.interior.manifold_repair));
   s += ", \"viewpoint\": " + (p.interior.viewpoint ? vec (*p.interior.viewpoint, 3) : std::string ("null")) + "}";
   s += ", \"features\": \"" + std::string (sideName (p.features)) + "\"";
   s += ", \"execution\": {\"threads\": " + std::to_string (p.execution.threads) +
@@ -102,7 +103,8 @@ writeInterior (std::ostream& out, const InteriorReport& in)
         << ", \"manifold\": " << jsonBool (in.manifold) << ", \"nonmanifold_edges\": " << in.nonmanifold_edges
         << ", \"nonmanifold_vertices\": " << in.nonmanifold_vertices << ", \"vertices_off_boundary\": " << in.vertices_off_boundary
         << ", \"surface_variation\": " << (in.surface_variation < 0 ? std::string ("null") : num (in.surface_variation))
-        << ", \"smoothing_passes\": " << in.smoothing_passes << ", \"ray_cells\": " << in.ray_cells;
+        << ", \"smoothing_passes\": " << in.smoothing_passes << ", \"ray_cells\": " << in.ray_cells
+        << ", \"repaired_cells\": " << in.repaired_cells;
   out << "},\n";
 }
 

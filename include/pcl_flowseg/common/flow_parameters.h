@@ -141,6 +141,11 @@ struct InteriorParameters
   /** Sensor position of a single-view scan, input frame: the cells the rays from it to the
     * points cross are free space, hence outside. None by default. */
   std::optional<Eigen::Vector3d> viewpoint;
+  /** 3D: where the boundary between inside and outside cells is not a manifold (an edge on more
+    * than two boundary facets, a vertex where its facets meet in more than one fan), the cells
+    * around that vertex are relabelled until it is one: the smallest group of cells changes side.
+    * Not applied with a viewpoint (a single view's boundary is open where it was not seen). */
+  bool manifold_repair = true;
 };
 
 /** \brief Most worker threads a run may be given (ExecutionParameters::threads). */

@@ -165,6 +165,8 @@ struct InteriorReport
   /** Sample points on no boundary facet (inside the shape, or in a spurious pocket). */
   std::size_t vertices_off_boundary = 0;
   bool closed = false;   ///< every boundary edge (3D) / vertex (2D) bounds an even number of facets
+  /** Cells relabelled to make the boundary a manifold (InteriorParameters::manifold_repair). */
+  std::size_t repaired_cells = 0;
   bool manifold = false; ///< closed, and no non-manifold edge or vertex
   std::size_t ray_cells = 0; ///< cells marked outside by sensor rays (viewpoint given)
   /** Median over the samples of the surface variation of their 16 nearest neighbours (smallest

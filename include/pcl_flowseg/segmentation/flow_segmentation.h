@@ -96,6 +96,9 @@ public:
   /** \brief pcl_flowseg::InteriorParameters::separate. */
   inline void setSeparateInterior (bool separate) { params_.interior.separate = separate; }
   inline bool getSeparateInterior () const { return params_.interior.separate; }
+  /** \brief pcl_flowseg::InteriorParameters::manifold_repair (default true). */
+  inline void setManifoldRepair (bool repair) { params_.interior.manifold_repair = repair; }
+  inline bool getManifoldRepair () const { return params_.interior.manifold_repair; }
   /** \brief pcl_flowseg::InteriorParameters::denoising. */
   inline void setDenoising (pcl_flowseg::Denoising mode) { params_.interior.denoising = mode; }
   inline pcl_flowseg::Denoising getDenoising () const { return params_.interior.denoising; }

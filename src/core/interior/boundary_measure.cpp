@@ -25,6 +25,7 @@ struct BoundaryCheck
   bool odd = false;                      ///< some edge (3D) or vertex (2D) bounds an odd number of facets
   std::size_t nonmanifold_edges = 0;
   std::size_t nonmanifold_vertices = 0;
+  std::vector<int> nonmanifold; ///< 3D: the vertices on a non-manifold edge or with a non-manifold fan, ascending
 };
 
 /** The facets of inside cells that face an outside cell or the hull; inside volume and cells. */
@@ -96,11 +97,12 @@ trianglesAround (const Facets& triangles, std::size_t vertex_count)
   return a;
 }
 
-/** The fan of vertex \a v: its edges to each neighbour w (counted where v < w) must lie on exactly
-  * two triangles, and the triangles must form one component when linked through shared edges. */
+/** The fan of vertex \a v: its edges to each neighbour w (counted where v < w; \a on_bad_edge for
+  * any w) must lie on exactly two triangles, and the triangles must form one component when linked
+  * through shared edges. */
 void
 checkFan (std::size_t v, const Facets& triangles, const Around& a, std::uint8_t& odd_edge, std::uint32_t& bad_edges,
-          std::uint8_t& bad_vertex)
+          std::uint8_t& bad_vertex, std::uint8_t& on_bad_edge)
 {
   const std::size_t m = a.first[v + 1] - a.first[v];
   thread_local std::vector<std::pair<int, int>> ends; // (other vertex, local triangle)
@@ -123,6 +125,7 @@ checkFan (std::size_t v, const Facets& triangles, const Around& a, std::uint8_t&
     std::size_t j = i + 1;
     for (; j < ends.size () && ends[j].first == ends[i].first; ++j)
       parent[static_cast<std::size_t> (find (ends[j].second))] = find (ends[i].second);
+    on_bad_edge |= j - i != 2;
     if (static_cast<int> (v) < ends[i].first)
     {
       odd_edge |= (j - i) % 2 == 1;
@@ -144,22 +147,33 @@ checkSurface (const Facets& triangles, std::size_t vertex_count)
   check.on_boundary.assign (vertex_count, 0);
   const Around a = trianglesAround (triangles, vertex_count);
   std::vector<std::uint32_t> bad_edges (vertex_count, 0);
-  std::vector<std::uint8_t> odd_edge (vertex_count, 0), bad_vertex (vertex_count, 0);
+  std::vector<std::uint8_t> odd_edge (vertex_count, 0), bad_vertex (vertex_count, 0), on_bad_edge (vertex_count, 0);
   parallelFor (vertex_count, [&] (std::size_t v) {
     if (a.first[v + 1] == a.first[v])
       return;
     check.on_boundary[v] = 1;
-    checkFan (v, triangles, a, odd_edge[v], bad_edges[v], bad_vertex[v]);
+    checkFan (v, triangles, a, odd_edge[v], bad_edges[v], bad_vertex[v], on_bad_edge[v]);
   });
   for (std::size_t v = 0; v < vertex_count; ++v)
   {
     check.odd |= odd_edge[v] != 0;
     check.nonmanifold_edges += bad_edges[v];
     check.nonmanifold_vertices += bad_vertex[v];
+    if (on_bad_edge[v] != 0 || bad_vertex[v] != 0)
+      check.nonmanifold.push_back (static_cast<int> (v));
   }
   return check;
 }
 } // namespace
+
+std::vector<int>
+nonmanifoldVertices (const FlowResult& r)
+{
+  if (r.dimension != 3)
+    return {};
+  InteriorReport scratch;
+  return checkSurface (insideFacets (r, scratch), r.vertices.size ()).nonmanifold;
+}
 
 void
 measureBoundary (FlowResult& r)

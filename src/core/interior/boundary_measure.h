@@ -6,6 +6,8 @@
 
 #include <pcl_flowseg/common/flow_result.h>
 
+#include <vector>
+
 namespace pcl_flowseg {
 namespace core {
 
@@ -14,6 +16,12 @@ namespace core {
   * closed and manifold. The other fields of the report are left as they are. */
 void
 measureBoundary (FlowResult& result);
+
+/** \brief 3D: the vertices (ascending) at which the interior/exterior boundary is not a manifold:
+  * an edge of theirs bounds other than two boundary facets, or their boundary facets form more
+  * than one fan. Empty in 2D. */
+std::vector<int>
+nonmanifoldVertices (const FlowResult& result);
 
 } // namespace core
 } // namespace pcl_flowseg

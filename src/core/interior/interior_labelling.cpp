@@ -9,6 +9,7 @@
 #include "core/interior/boundary_measure.h"
 #include "core/interior/denoising.h"
 #include "core/interior/greedy_labelling.h"
+#include "core/interior/manifold_repair.h"
 
 #include <algorithm>
 #include <utility>
@@ -17,6 +18,18 @@ namespace pcl_flowseg {
 namespace core {
 
 namespace {
+/** Measures the boundary and, where it is not a manifold, repairs it (repairManifold) and
+  * measures it again, unless the repair is switched off or the sample is a single view. */
+void
+measureAndRepair (FlowResult& r, const InteriorParameters& params)
+{
+  measureBoundary (r);
+  if (!params.manifold_repair || params.viewpoint || r.interior.nonmanifold_edges + r.interior.nonmanifold_vertices == 0)
+    return;
+  r.interior.repaired_cells = repairManifold (r);
+  measureBoundary (r);
+}
+
 /** Labels \a r's cells by the greedy labelling of the raw sample (on \a agreements, when measured). */
 void
 labelRawSample (FlowResult& r, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
@@ -25,7 +38,7 @@ labelRawSample (FlowResult& r, const InteriorParameters& params, const std::vect
   if (agreements.size () != r.cells.size ())
     agreements = measureFacetAgreements (r.vertices, r.cells, r.dimension);
   r.interior.ray_cells = labelCellsGreedily (r.vertices, r.cells, r.dimension, params, vertex_normals, std::move (agreements));
-  measureBoundary (r);
+  measureAndRepair (r, params);
 }
 
 /** Gives every cell of \a r the label of the cell of \a smooth_cells (a triangulation of \a points)
@@ -73,7 +86,7 @@ labelSmoothedSample (FlowResult& r, const InteriorParameters& params, const std:
   }
   r.interior.ray_cells = labelCellsGreedily (points, smooth_cells, d, params, vertex_normals);
   transferLabels (points, smooth_cells, r);
-  measureBoundary (r);
+  measureAndRepair (r, params);
 }
 } // namespace
 
