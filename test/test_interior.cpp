@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "core/interior/boundary_measure.h"
+#include "core/interior/interior_labelling.h"
 #include "core/interior/manifold_repair.h"
 #include "test_support.h"
 
@@ -226,6 +227,30 @@ TEST (Interior, NoisySampleIsSmoothedAndStillSeparated)
   EXPECT_EQ (raw.interior.smoothing_passes, 0);
   EXPECT_GT (agreement (noisy, [&] (const V& p) { return shape.contains (p); }),
              agreement (raw, [&] (const V& p) { return shape.contains (p); }));
+}
+
+TEST (Interior, SmoothedSampleCanBeLabelledOnItsUnsmoothedVertices)
+{
+  // What the pipeline falls back to when smoothing before the triangulation collapsed thin parts
+  // (more than kSmoothedOffBoundaryShare of the samples off the interior boundary).
+  const BlobShape shape = sampleShape ("snowman3d");
+  auto pts = sampleBoundary (shape, 8000, 3);
+  std::mt19937 rng (4);
+  std::normal_distribution<double> g (0, 0.015);
+  for (auto& p : pts)
+    p += V (g (rng), g (rng), g (rng));
+  FlowResult r = segmentWith (pts, [] (FlowParameters& p) { p.preparation.smoothing = Smoothing::Always; });
+  ASSERT_GE (r.smoothing_passes, 1u);
+  const double presmoothed = agreement (r, [&] (const V& p) { return shape.contains (p); });
+  std::vector<V> raw (r.vertices.size ());
+  for (std::size_t i = 0; i < r.point_to_vertex.size (); ++i)
+    raw[static_cast<std::size_t> (r.point_to_vertex[i])] = pts[i];
+  ASSERT_TRUE (core::labelInteriorFromRawSample (r, InteriorParameters (), {}, raw).ok);
+  EXPECT_TRUE (r.interior.computed);
+  EXPECT_TRUE (r.interior.closed);
+  const double carried = agreement (r, [&] (const V& p) { return shape.contains (p); });
+  EXPECT_GT (carried, 0.97);
+  EXPECT_GT (carried, presmoothed - 0.02);
 }
 
 TEST (Interior, OpenScanGivesAWarningNotACrash)

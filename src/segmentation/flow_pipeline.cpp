@@ -225,6 +225,38 @@ vertexNormals (const Run& run)
   return normals;
 }
 
+/** The vertices as they were before the smoothing: the first input point of each. */
+std::vector<Eigen::Vector3d>
+unsmoothedVertices (const Run& run)
+{
+  const FlowResult& result = run.result;
+  std::vector<Eigen::Vector3d> raw (result.vertices.size ());
+  for (std::size_t i = result.point_to_vertex.size (); i-- > 0;)
+    if (result.point_to_vertex[i] >= 0)
+      raw[static_cast<std::size_t> (result.point_to_vertex[i])] = run.points[i];
+  return raw;
+}
+
+/** When a sample smoothed before the triangulation leaves more than kSmoothedOffBoundaryShare of
+  * its samples off the interior boundary, the smoothing collapsed thin parts: the interior is
+  * labelled again on the unsmoothed sample (with its own denoising) and carried over. */
+void
+relabelWhenSmoothingFailed (const Run& run)
+{
+  FlowResult& result = run.result;
+  const double off = static_cast<double> (result.interior.vertices_off_boundary) / std::max<std::size_t> (1, result.vertices.size ());
+  if (result.smoothing_passes == 0 || result.dimension != 3 || off <= core::kSmoothedOffBoundaryShare)
+    return;
+  if (const Status s = core::labelInteriorFromRawSample (result, run.params.interior, vertexNormals (run), unsmoothedVertices (run)); !s)
+  {
+    result.warnings.push_back ("the interior of the smoothed sample leaves many samples off its boundary; relabelling on the unsmoothed sample failed: " + s.message);
+    return;
+  }
+  result.warnings.push_back (std::to_string (static_cast<int> (100.0 * off + 0.5)) +
+                             "% of the smoothed samples lay off the interior boundary (thin parts collapsed?): "
+                             "the interior was labelled on the unsmoothed sample");
+}
+
 /** Interior/exterior labelling of the cells (writes cells' inside flags and result.warnings), on
   * \a agreements measured ahead in \a measured_ms (none: measured here when needed). */
 void
@@ -235,6 +267,7 @@ interiorStage (const Run& run, std::vector<core::GreedyCell>&& agreements, doubl
   const auto start = Clock::now ();
   FlowResult& result = run.result;
   core::labelInterior (result, run.params.interior, vertexNormals (run), std::move (agreements));
+  relabelWhenSmoothingFailed (run);
   const InteriorReport& in = result.interior;
   if (!in.closed)
     result.warnings.push_back ("the interior/exterior boundary is not closed");

@@ -60,14 +60,14 @@ transferLabels (const std::vector<Eigen::Vector3d>& points, const std::vector<Fl
   }
 }
 
-/** Noisy sample: in/out decided on a smoothed copy of the points (the greedy labelling needs a
-  * thin sample) and transferred to the cells. */
+/** Noisy sample: in/out decided on a smoothed copy of \a points (the vertices, or the same vertices
+  * before the smoothing before the triangulation; \a hoods: their neighbourhoods; the greedy
+  * labelling needs a thin sample) and transferred to the cells. */
 void
 labelSmoothedSample (FlowResult& r, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
-                     const Neighbourhoods& hoods)
+                     const Neighbourhoods& hoods, std::vector<Eigen::Vector3d> points)
 {
   const int d = r.dimension;
-  std::vector<Eigen::Vector3d> points = r.vertices;
   for (int it = 0; it < kMaxDenoisingPasses; ++it)
   {
     points = smoothPoints (points, hoods, d);
@@ -111,7 +111,25 @@ labelInterior (FlowResult& r, const InteriorParameters& params, const std::vecto
   r.interior.surface_variation = medianVariation (r.vertices, hoods, r.dimension);
   if (params.denoising == Denoising::Automatic && r.interior.surface_variation <= kNoiseVariation)
     return;
-  labelSmoothedSample (r, params, vertex_normals, hoods);
+  labelSmoothedSample (r, params, vertex_normals, hoods, r.vertices);
+}
+
+Status
+labelInteriorFromRawSample (FlowResult& r, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
+                            const std::vector<Eigen::Vector3d>& raw_vertices)
+{
+  InteriorParameters own = params;
+  own.denoising = Denoising::Off; // if its triangulation fails, the cells keep their labels
+  r.interior = InteriorReport ();
+  r.interior.computed = true;
+  const std::size_t warnings = r.warnings.size ();
+  labelSmoothedSample (r, own, vertex_normals, nearestNeighbourhoods (raw_vertices), raw_vertices);
+  if (r.interior.smoothing_passes > 0)
+    return Status::success ();
+  const std::string why = r.warnings.size () > warnings ? r.warnings.back () : "the unsmoothed sample could not be triangulated";
+  r.warnings.resize (warnings);
+  measureBoundary (r);
+  return Status::error (why);
 }
 
 } // namespace core

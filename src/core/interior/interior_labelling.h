@@ -9,6 +9,7 @@
 
 #include <pcl_flowseg/common/flow_parameters.h>
 #include <pcl_flowseg/common/flow_result.h>
+#include <pcl_flowseg/common/status.h>
 
 #include <vector>
 
@@ -26,6 +27,19 @@ namespace core {
 void
 labelInterior (FlowResult& result, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
                std::vector<GreedyCell>&& raw_agreements = {});
+
+/** \brief Share of the samples off the interior boundary above which a labelling of a sample
+  * smoothed before the triangulation counts as failed (its thin parts collapsed: docs/method.md). */
+constexpr double kSmoothedOffBoundaryShare = 0.15;
+
+/** \brief Labels \a result's cells (triangulated from smoothed vertices) as a noisy sample is
+  * labelled, on \a raw_vertices (the same vertices before that smoothing) smoothed by the
+  * interior's own projections: each cell takes the label of the cell of that copy's triangulation
+  * that holds its centroid; then the boundary is measured (and repaired). On failure the cells keep
+  * their labels. */
+Status
+labelInteriorFromRawSample (FlowResult& result, const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
+                            const std::vector<Eigen::Vector3d>& raw_vertices);
 
 } // namespace core
 } // namespace pcl_flowseg
