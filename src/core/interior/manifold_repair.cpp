@@ -86,6 +86,8 @@ groupStar (const std::vector<FlowCell>& cells, int v, const std::vector<int>& st
       const int nb = c.neighbors[i];
       g.on_hull |= nb < 0;
       const auto at = nb < 0 ? hull : static_cast<std::size_t> (std::lower_bound (star.begin (), star.end (), nb) - star.begin ());
+      if (nb >= 0 && (at == m || star[at] != nb))
+        continue; // not around v: cells that do not fit together are left as they are
       if (labelOf (cells, star, at) == c.inside)
         g.join (static_cast<int> (k), static_cast<int> (at));
     }
