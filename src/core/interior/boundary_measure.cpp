@@ -167,15 +167,6 @@ checkSurface (const Facets& triangles, std::size_t vertex_count)
 } // namespace
 
 std::vector<int>
-nonmanifoldVertices (const FlowResult& r)
-{
-  if (r.dimension != 3)
-    return {};
-  InteriorReport scratch;
-  return checkSurface (insideFacets (r, scratch), r.vertices.size ()).nonmanifold;
-}
-
-void
 measureBoundary (FlowResult& r)
 {
   InteriorReport& rep = r.interior;
@@ -189,6 +180,7 @@ measureBoundary (FlowResult& r)
     rep.vertices_off_boundary += b ? 0 : 1;
   rep.closed = !check.odd && rep.boundary_facets > 0;
   rep.manifold = rep.closed && rep.nonmanifold_edges == 0 && rep.nonmanifold_vertices == 0;
+  return check.nonmanifold;
 }
 
 } // namespace core

@@ -13,15 +13,11 @@ namespace core {
 
 /** \brief Recomputes FlowResult::interior's figures from the cells' inside flags: inside volume
   * and cells, boundary facets, non-manifold edges (3D) and vertices, samples off the boundary,
-  * closed and manifold. The other fields of the report are left as they are. */
-void
-measureBoundary (FlowResult& result);
-
-/** \brief 3D: the vertices (ascending) at which the interior/exterior boundary is not a manifold:
-  * an edge of theirs bounds other than two boundary facets, or their boundary facets form more
-  * than one fan. Empty in 2D. */
+  * closed and manifold. The other fields of the report are left as they are. Returns, in 3D, the
+  * vertices (ascending) at which the boundary is not a manifold: an edge of theirs bounds other
+  * than two boundary facets, or their boundary facets form more than one fan (2D: none). */
 std::vector<int>
-nonmanifoldVertices (const FlowResult& result);
+measureBoundary (FlowResult& result);
 
 } // namespace core
 } // namespace pcl_flowseg

@@ -4,6 +4,7 @@
  */
 #include "core/interior/detached_points.h"
 
+#include "core/interior/denoising.h"
 #include "core/support/parallel.h"
 
 #include <algorithm>

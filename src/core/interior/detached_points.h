@@ -4,8 +4,6 @@
  */
 #pragma once
 
-#include "core/interior/denoising.h"
-
 #include <Eigen/Core>
 
 #include <cstddef>

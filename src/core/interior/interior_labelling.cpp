@@ -18,16 +18,14 @@ namespace pcl_flowseg {
 namespace core {
 
 namespace {
-/** Measures the boundary and, where it is not a manifold, repairs it (repairManifold) and
-  * measures it again, unless the repair is switched off or the sample is a single view. */
+/** Measures the boundary and, where it is not a manifold, repairs it (repairManifold, which
+  * measures it again), unless the repair is switched off or the sample is a single view. */
 void
 measureAndRepair (FlowResult& r, const InteriorParameters& params)
 {
-  measureBoundary (r);
-  if (!params.manifold_repair || params.viewpoint || r.interior.nonmanifold_edges + r.interior.nonmanifold_vertices == 0)
-    return;
-  r.interior.repaired_cells = repairManifold (r);
-  measureBoundary (r);
+  std::vector<int> nonmanifold = measureBoundary (r);
+  if (params.manifold_repair && !params.viewpoint && !nonmanifold.empty ())
+    r.interior.repaired_cells = repairManifold (r, std::move (nonmanifold));
 }
 
 /** Labels \a r's cells by the greedy labelling of the raw sample (on \a agreements, when measured). */

@@ -174,15 +174,12 @@ starRow (const Stars& stars, std::size_t b)
 } // namespace
 
 std::size_t
-repairManifold (FlowResult& r)
+repairManifold (FlowResult& r, std::vector<int> bad)
 {
   std::size_t relabelled = 0;
   std::vector<char> changed;
-  for (int round = 0; round < kMaxManifoldRepairRounds; ++round)
+  for (int round = 0; round < kMaxManifoldRepairRounds && !bad.empty (); ++round)
   {
-    const std::vector<int> bad = nonmanifoldVertices (r);
-    if (bad.empty ())
-      break;
     const Stars stars = starsOf (r.cells, bad);
     changed.resize (r.cells.size (), 0);
     // Smallest change first: the order of the vertices' numbers, which a rotated copy of the
@@ -197,6 +194,7 @@ repairManifold (FlowResult& r)
     std::sort (order.begin (), order.end ());
     for (const auto& [volume, b] : order)
       relabelled += repairStar (r.cells, bad[b], starRow (stars, b), changed);
+    bad = measureBoundary (r);
   }
   return relabelled;
 }

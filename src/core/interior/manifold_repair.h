@@ -8,6 +8,7 @@
 #include <pcl_flowseg/common/flow_result.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace pcl_flowseg {
 namespace core {
@@ -17,13 +18,14 @@ namespace core {
 constexpr int kMaxManifoldRepairRounds = 8;
 
 /** \brief 3D: makes the boundary between inside and outside cells (FlowCell::inside) a manifold at
-  * the vertices where it is not one (nonmanifoldVertices). Around such a vertex the inside cells
+  * the vertices where it is not one (\a nonmanifold: what measureBoundary returned for the cells
+  * as they are; it measures the report again after every round). Around such a vertex the inside cells
   * must form one group and the outside cells another, linked through the facets that hold the
   * vertex (the cells beyond the hull count as one outside group); while they do not, the group of
   * least volume changes side (never the group beyond the hull). Nothing changes in 2D or on a
   * boundary that is already a manifold. Returns the cells relabelled. */
 std::size_t
-repairManifold (FlowResult& result);
+repairManifold (FlowResult& result, std::vector<int> nonmanifold);
 
 } // namespace core
 } // namespace pcl_flowseg
