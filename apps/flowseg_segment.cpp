@@ -130,10 +130,11 @@ printSummary (const Options& o, const pcl_flowseg::FlowResult& r, double read_ms
                 r.noise.sigma, 100.0 * r.noise.share, r.noise.roughness, 100.0 * r.noise.isolated_share,
                 100.0 * r.noise.detached_share, r.smoothing_passes);
   if (r.interior.computed)
-    std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s (%zu cells relabelled), %zu samples off the boundary, %d smoothing pass(es)\n",
+    std::fprintf (stderr, "interior: %.4g volume in %zu cells, boundary %zu facets, %s, %s (%zu cells relabelled), %zu samples off the boundary, %d smoothing pass(es), %zu vertices guessed on the hidden side\n",
                   r.interior.inside_volume, r.interior.inside_cells, r.interior.boundary_facets,
                   r.interior.closed ? "closed" : "NOT closed", r.interior.manifold ? "manifold" : "not manifold",
-                  r.interior.repaired_cells, r.interior.vertices_off_boundary, r.interior.smoothing_passes);
+                  r.interior.repaired_cells, r.interior.vertices_off_boundary, r.interior.smoothing_passes,
+                  r.hidden_side_vertices);
   const auto& t = r.timings;
   std::fprintf (stderr, "time ms: read %.1f, preparation %.1f, noise %.1f, delaunay %.1f, flow %.1f, manifolds %.1f, interior %.1f, merge %.1f, labels %.1f, total %.1f\n",
                 read_ms, t.preparation_ms, t.noise_ms, t.delaunay_ms, t.flow_ms, t.manifolds_ms, t.interior_ms, t.merge_ms, t.labels_ms, t.total_ms);

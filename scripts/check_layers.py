@@ -31,7 +31,7 @@ CORE_ALLOWED = {
     'support': set(),
     'geometry': set(),
     'delaunay': {'support'},
-    'preparation': {'support'},
+    'preparation': {'support', 'geometry'},
     'flow': {'support', 'geometry', 'delaunay'},
     'interior': {'support', 'geometry', 'delaunay'},
     'labels': {'support', 'geometry'},

@@ -71,6 +71,8 @@ addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
             [in] () { in->separate = false; });
   p.action ("--no-manifold-repair", "keep the interior/exterior boundary as the labelling left it, also\nwhere it is not a manifold (3D)",
             [in] () { in->manifold_repair = false; });
+  p.action ("--no-hidden-side", "with a viewpoint: do not guess the side of the single view the sensor\ncannot see (the hidden volume then joins the seen parts into few features)",
+            [in] () { in->hidden_side = false; });
   p.choice ("--denoise", "MODE", "auto | off | on: smooth noisy samples before separating interior\nand exterior",
             params.interior.denoising,
             std::vector<std::pair<std::string, pcl_flowseg::Denoising>>{{"auto", pcl_flowseg::Denoising::Automatic},

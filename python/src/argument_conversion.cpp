@@ -184,6 +184,9 @@ addFlowKeywords (std::map<std::string, Keyword>& k)
   k["manifold_repair"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
                             return toFlag (n, v, c.flow.interior.manifold_repair);
                           }};
+  k["hidden_side"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
+                        return toFlag (n, v, c.flow.interior.hidden_side);
+                      }};
   k["denoising"] = {kFlowArguments, flowChoice (&FP::interior, &pcl_flowseg::InteriorParameters::denoising, kModeNames)};
   k["viewpoint"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
                       return toViewpoint (n, v, c.flow.interior.viewpoint);
@@ -317,6 +320,7 @@ flowArguments (const pcl_flowseg::FlowParameters& p)
   a.emplace_back ("separate", p.interior.separate);
   a.emplace_back ("denoising", kModeNames[static_cast<std::size_t> (p.interior.denoising) % 3]);
   a.emplace_back ("manifold_repair", p.interior.manifold_repair);
+  a.emplace_back ("hidden_side", p.interior.hidden_side);
   if (p.interior.viewpoint)
     a.emplace_back ("viewpoint", std::vector<double>{p.interior.viewpoint->x (), p.interior.viewpoint->y (), p.interior.viewpoint->z ()});
   else

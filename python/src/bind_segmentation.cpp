@@ -138,6 +138,7 @@ interiorReport (const pcl_flowseg::InteriorReport& r)
   d["vertices_off_boundary"] = r.vertices_off_boundary;
   d["ray_cells"] = r.ray_cells;
   d["repaired_cells"] = r.repaired_cells;
+  d["island_cells"] = r.island_cells;
   d["surface_variation"] = r.surface_variation;
   d["smoothing_passes"] = r.smoothing_passes;
   return d;
@@ -271,6 +272,8 @@ bindResult (py::module_& m)
       .def_property_readonly ("duplicate_points", [] (const Segmentation& s) { return s.result->duplicate_points; })
       .def_property_readonly ("outlier_points", [] (const Segmentation& s) { return s.result->outlier_points; },
                               "Points left out as outliers, isolated or detached from the surface (label -1).")
+      .def_property_readonly ("hidden_side_vertices", [] (const Segmentation& s) { return s.result->hidden_side_vertices; },
+                              "Vertices added behind a single view (hidden_side=True with a viewpoint); they label no point.")
       .def_property_readonly ("unlabelled_points", [] (const Segmentation& s) { return s.result->unlabelledPoints (); })
       .def_property_readonly ("noise", [] (const Segmentation& s) {
         py::dict d;
@@ -323,7 +326,7 @@ points: (n, 2) or (n, 3) float32/float64 array (2 columns: a 2D shape). NaN/Inf 
 normals: None or (n, 3) array of outward normals (evidence for the interior/exterior separation).
 progress: None or a callable(stage: str, fraction: float), called during the run.
 Keywords (see defaults()): dimension, planar_tolerance, outliers, smoothing, smoothing_passes, rho, sampling_tolerance, stump_ratio,
-    compact_rho, compact_size, min_part_share, separate, denoising, viewpoint, manifold_repair, features, threads, memory_limit,
+    compact_rho, compact_size, min_part_share, separate, denoising, viewpoint, manifold_repair, hidden_side, features, threads, memory_limit,
     significance.
 Raises ValueError for input that cannot be segmented or a parameter out of range, TypeError for
 an unknown keyword. The GIL is released during the computation.)doc");

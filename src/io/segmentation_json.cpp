@@ -62,6 +62,7 @@ parametersJson (const FlowParameters& p)
   s += ", \"interior\": {\"separate\": " + std::string (jsonBool (p.interior.separate)) + ", \"denoising\": ";
   s += modeJson (p.interior.denoising);
   s += ", \"manifold_repair\": " + std::string (jsonBool (p.interior.manifold_repair));
+  s += ", \"hidden_side\": " + std::string (jsonBool (p.interior.hidden_side));
   s += ", \"viewpoint\": " + (p.interior.viewpoint ? vec (*p.interior.viewpoint, 3) : std::string ("null")) + "}";
   s += ", \"features\": \"" + std::string (sideName (p.features)) + "\"";
   s += ", \"execution\": {\"threads\": " + std::to_string (p.execution.threads) +
@@ -80,6 +81,7 @@ writeCounts (std::ostream& out, const FlowResult& r, const RunInfo& info)
   out << "  \"non_finite_points\": " << r.non_finite_points << ",\n";
   out << "  \"duplicate_points\": " << r.duplicate_points << ",\n";
   out << "  \"outlier_points\": " << r.outlier_points << ",\n";
+  out << "  \"hidden_side_vertices\": " << r.hidden_side_vertices << ",\n";
   out << "  \"smoothing_passes\": " << r.smoothing_passes << ",\n";
   out << "  \"vertices\": " << r.vertices.size () << ",\n";
   out << "  \"cells\": " << r.cells.size () << ",\n";
@@ -104,7 +106,7 @@ writeInterior (std::ostream& out, const InteriorReport& in)
         << ", \"nonmanifold_vertices\": " << in.nonmanifold_vertices << ", \"vertices_off_boundary\": " << in.vertices_off_boundary
         << ", \"surface_variation\": " << (in.surface_variation < 0 ? std::string ("null") : num (in.surface_variation))
         << ", \"smoothing_passes\": " << in.smoothing_passes << ", \"ray_cells\": " << in.ray_cells
-        << ", \"repaired_cells\": " << in.repaired_cells;
+        << ", \"repaired_cells\": " << in.repaired_cells << ", \"island_cells\": " << in.island_cells;
   out << "},\n";
 }
 

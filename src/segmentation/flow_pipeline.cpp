@@ -15,6 +15,7 @@
 #include "core/interior/sample_smoothing.h"
 #include "core/labels/point_labels.h"
 #include "core/merging/manifold_merging.h"
+#include "core/preparation/hidden_side.h"
 #include "core/preparation/outlier_removal.h"
 #include "core/preparation/point_preparation.h"
 #include "core/support/parallel.h"
@@ -144,6 +145,21 @@ smoothingStage (const Run& run, core::PreparedPoints& prepared)
   result.timings.preparation_ms += millisecondsSince (start);
 }
 
+/** A single view (viewpoint given, 3D, InteriorParameters::hidden_side): the side the sensor cannot
+  * see, guessed by mirroring, added as the last vertices; they label no point. */
+void
+hiddenSideStage (const Run& run, core::PreparedPoints& prepared)
+{
+  const InteriorParameters& interior = run.params.interior;
+  if (!interior.viewpoint || !interior.hidden_side || !interior.separate || prepared.dimension != 3)
+    return;
+  const auto start = Clock::now ();
+  const std::vector<Eigen::Vector3d> hidden = core::mirroredHiddenSide (prepared.vertices, *interior.viewpoint);
+  prepared.vertices.insert (prepared.vertices.end (), hidden.begin (), hidden.end ());
+  run.result.hidden_side_vertices = hidden.size ();
+  run.result.timings.preparation_ms += millisecondsSince (start);
+}
+
 /** Finite filter, duplicates, dimension, noise, outliers, smoothing: the vertices of the triangulation. */
 Status
 prepareStage (const Run& run, core::PreparedPoints& prepared)
@@ -157,6 +173,7 @@ prepareStage (const Run& run, core::PreparedPoints& prepared)
   noiseStage (prepared, result);
   outlierStage (run, prepared);
   smoothingStage (run, prepared);
+  hiddenSideStage (run, prepared);
   result.dimension = prepared.dimension;
   result.non_finite_points = prepared.non_finite;
   result.duplicate_points = prepared.duplicates;
@@ -225,12 +242,13 @@ vertexNormals (const Run& run)
   return normals;
 }
 
-/** The vertices as they were before the smoothing: the first input point of each. */
+/** The vertices as they were before the smoothing: the first input point of each (the hidden side's
+  * vertices as they are). */
 std::vector<Eigen::Vector3d>
 unsmoothedVertices (const Run& run)
 {
   const FlowResult& result = run.result;
-  std::vector<Eigen::Vector3d> raw (result.vertices.size ());
+  std::vector<Eigen::Vector3d> raw (result.vertices);
   for (std::size_t i = result.point_to_vertex.size (); i-- > 0;)
     if (result.point_to_vertex[i] >= 0)
       raw[static_cast<std::size_t> (result.point_to_vertex[i])] = run.points[i];

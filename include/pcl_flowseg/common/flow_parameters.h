@@ -146,6 +146,11 @@ struct InteriorParameters
     * around that vertex are relabelled until it is one: the smallest group of cells changes side.
     * Not applied with a viewpoint (a single view's boundary is open where it was not seen). */
   bool manifold_repair = true;
+  /** 3D, with a viewpoint: the side of the single view the sensor cannot see is guessed before the
+    * triangulation, each seen sample mirrored along its ray about the depth of the nearest rim
+    * (silhouette or occlusion edge) behind it, so that parts get a volume and their own features
+    * instead of one shell. The added vertices label no point (FlowResult::hidden_side_vertices). */
+  bool hidden_side = true;
 };
 
 /** \brief Most worker threads a run may be given (ExecutionParameters::threads). */

@@ -165,6 +165,9 @@ struct InteriorReport
   /** Sample points on no boundary facet (inside the shape, or in a spurious pocket). */
   std::size_t vertices_off_boundary = 0;
   bool closed = false;   ///< every boundary edge (3D) / vertex (2D) bounds an even number of facets
+  /** Cells labelled outside as tiny pockets cut off from the rest of the interior (single views
+    * with a guessed hidden side only). */
+  std::size_t island_cells = 0;
   /** Cells relabelled to make the boundary a manifold (InteriorParameters::manifold_repair). */
   std::size_t repaired_cells = 0;
   bool manifold = false; ///< closed, and no non-manifold edge or vertex
@@ -187,9 +190,13 @@ struct FlowResult
   std::size_t duplicate_points = 0;  ///< points equal to an earlier point (labelled like it)
   std::size_t outlier_points = 0;    ///< points left out as outliers (label kNoSegment)
   unsigned smoothing_passes = 0;     ///< smoothing passes applied to the vertices before the triangulation
+  /** Vertices added behind a single view (the side the sensor cannot see), the last ones of
+    * \a vertices; they label no input point. */
+  std::size_t hidden_side_vertices = 0;
 
   /** Coordinates of the unique finite points (the triangulation's vertices), input frame, in a
-    * spatial order (along a Z-order curve), not in input order: use point_to_vertex. */
+    * spatial order (along a Z-order curve), not in input order: use point_to_vertex. The last
+    * hidden_side_vertices of them were guessed behind a single view. */
   std::vector<Eigen::Vector3d> vertices;
   /** For each input point, its vertex in \a vertices, or -1 when it was not finite. */
   std::vector<int> point_to_vertex;

@@ -99,6 +99,9 @@ public:
   /** \brief pcl_flowseg::InteriorParameters::manifold_repair (default true). */
   inline void setManifoldRepair (bool repair) { params_.interior.manifold_repair = repair; }
   inline bool getManifoldRepair () const { return params_.interior.manifold_repair; }
+  /** \brief pcl_flowseg::InteriorParameters::hidden_side (default true; acts with a viewpoint). */
+  inline void setHiddenSide (bool guess) { params_.interior.hidden_side = guess; }
+  inline bool getHiddenSide () const { return params_.interior.hidden_side; }
   /** \brief pcl_flowseg::InteriorParameters::denoising. */
   inline void setDenoising (pcl_flowseg::Denoising mode) { params_.interior.denoising = mode; }
   inline pcl_flowseg::Denoising getDenoising () const { return params_.interior.denoising; }

@@ -67,12 +67,13 @@ public:
     }
   }
 
-  /** Sensor rays: everything between the sensor and a sample is free space. Returns the cells marked. */
+  /** Sensor rays: everything between the sensor and a sample (one of the first \a seen vertices) is
+    * free space. Returns the cells marked. */
   std::size_t
-  rayEvidence (const Eigen::Vector3d& viewpoint)
+  rayEvidence (const Eigen::Vector3d& viewpoint, std::size_t seen)
   {
     std::size_t marked = 0;
-    const std::vector<std::uint8_t> free_space = freeSpaceCells (vertices_, cells_, d_, viewpoint, marked);
+    const std::vector<std::uint8_t> free_space = freeSpaceCells (vertices_, seen, cells_, d_, viewpoint, marked);
     for (std::size_t c = 0; c < cells_.size (); ++c)
       if (free_space[c])
         evidence (c, true, 1.0); // as strong as the strongest geometric evidence
@@ -136,22 +137,23 @@ private:
 
 std::size_t
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
-                    const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals)
+                    const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
+                    std::size_t seen_vertices)
 {
   return labelCellsGreedily (vertices, cells, dimension, params, vertex_normals,
-                             measureFacetAgreements (vertices, cells, dimension));
+                             seen_vertices, measureFacetAgreements (vertices, cells, dimension));
 }
 
 std::size_t
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
                     const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
-                    std::vector<GreedyCell>&& measured)
+                    std::size_t seen_vertices, std::vector<GreedyCell>&& measured)
 {
   GreedyLabelling labelling (vertices, cells, dimension, std::move (measured));
   labelling.hullEvidence ();
   if (!vertex_normals.empty ())
     labelling.normalEvidence (vertex_normals);
-  const std::size_t ray_cells = params.viewpoint ? labelling.rayEvidence (*params.viewpoint) : 0;
+  const std::size_t ray_cells = params.viewpoint ? labelling.rayEvidence (*params.viewpoint, seen_vertices) : 0;
   labelling.propagate ();
   return ray_cells;
 }

@@ -23,16 +23,19 @@ namespace core {
   * params.viewpoint (optional) add evidence per cell. Labels are then propagated from the most
   * certain cell (largest margin between its summed inside and outside evidence) on, as the power
   * crust labels its poles, so that weak, contradictory evidence is decided last.
+  * Only the first \a seen_vertices vertices are samples the sensor saw (the rest were guessed
+  * behind them: they cast no ray).
   * \return the number of cells the sensor rays marked as free space. */
 std::size_t
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
-                    const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals);
+                    const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
+                    std::size_t seen_vertices);
 
 /** \brief The same, on agreements \a measured ahead by measureFacetAgreements of the same cells. */
 std::size_t
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
                     const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
-                    std::vector<GreedyCell>&& measured);
+                    std::size_t seen_vertices, std::vector<GreedyCell>&& measured);
 
 } // namespace core
 } // namespace pcl_flowseg

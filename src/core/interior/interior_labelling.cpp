@@ -9,6 +9,7 @@
 #include "core/interior/boundary_measure.h"
 #include "core/interior/denoising.h"
 #include "core/interior/greedy_labelling.h"
+#include "core/interior/interior_islands.h"
 #include "core/interior/manifold_repair.h"
 
 #include <algorithm>
@@ -19,10 +20,13 @@ namespace core {
 
 namespace {
 /** Measures the boundary and, where it is not a manifold, repairs it (repairManifold, which
-  * measures it again), unless the repair is switched off or the sample is a single view. */
+  * measures it again), unless the repair is switched off or the sample is a single view. On a single
+  * view with a guessed hidden side, tiny pockets of inside cells are labelled outside first. */
 void
 measureAndRepair (FlowResult& r, const InteriorParameters& params)
 {
+  if (r.hidden_side_vertices > 0)
+    r.interior.island_cells = dropInteriorIslands (r, kInteriorIslandShare);
   std::vector<int> nonmanifold = measureBoundary (r);
   if (params.manifold_repair && !params.viewpoint && !nonmanifold.empty ())
     r.interior.repaired_cells = repairManifold (r, std::move (nonmanifold));
@@ -35,7 +39,8 @@ labelRawSample (FlowResult& r, const InteriorParameters& params, const std::vect
 {
   if (agreements.size () != r.cells.size ())
     agreements = measureFacetAgreements (r.vertices, r.cells, r.dimension);
-  r.interior.ray_cells = labelCellsGreedily (r.vertices, r.cells, r.dimension, params, vertex_normals, std::move (agreements));
+  r.interior.ray_cells = labelCellsGreedily (r.vertices, r.cells, r.dimension, params, vertex_normals,
+                                              r.vertices.size () - r.hidden_side_vertices, std::move (agreements));
   measureAndRepair (r, params);
 }
 
@@ -82,7 +87,7 @@ labelSmoothedSample (FlowResult& r, const InteriorParameters& params, const std:
       labelRawSample (r, params, vertex_normals);
     return;
   }
-  r.interior.ray_cells = labelCellsGreedily (points, smooth_cells, d, params, vertex_normals);
+  r.interior.ray_cells = labelCellsGreedily (points, smooth_cells, d, params, vertex_normals, points.size () - r.hidden_side_vertices);
   transferLabels (points, smooth_cells, r);
   measureAndRepair (r, params);
 }

@@ -83,13 +83,13 @@ markRay (const std::vector<Eigen::Vector3d>& vertices, const std::vector<FlowCel
 } // namespace
 
 std::vector<std::uint8_t>
-freeSpaceCells (const std::vector<Eigen::Vector3d>& vertices, const std::vector<FlowCell>& cells, int dimension,
+freeSpaceCells (const std::vector<Eigen::Vector3d>& vertices, std::size_t seen, const std::vector<FlowCell>& cells, int dimension,
                 const Eigen::Vector3d& viewpoint, std::size_t& marked)
 {
   const VertexIncidence inc = vertexIncidence (cells, vertices.size (), dimension);
   std::vector<std::uint8_t> free_space (cells.size (), 0);
   marked = 0;
-  for (std::size_t v = 0; v < vertices.size (); ++v)
+  for (std::size_t v = 0; v < seen; ++v)
     marked += markRay (vertices, cells, dimension, inc, static_cast<int> (v), viewpoint, free_space);
   return free_space;
 }

@@ -1,0 +1,160 @@
+/*
+ * pcl_flowseg - tests: the hidden side of a single-view scan, guessed by mirroring.
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#include "test_support.h"
+
+#include "core/interior/interior_islands.h"
+#include "core/preparation/hidden_side.h"
+
+#include <pcl_flowseg/io/range_scan.h>
+#include <pcl_flowseg/segmentation/flow_pipeline.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+using namespace pcl_flowseg;
+using flowseg_test::segmentWith;
+using V = Eigen::Vector3d;
+
+namespace {
+
+/** Appends a UV sphere of \a radius around \a centre (64 x 32 quads). */
+void
+addSphere (TriangleMesh& mesh, const V& centre, double radius)
+{
+  constexpr int kAround = 64, kDown = 32;
+  const int base = static_cast<int> (mesh.vertices.size ());
+  for (int i = 0; i <= kDown; ++i)
+    for (int j = 0; j < kAround; ++j)
+    {
+      const double theta = M_PI * i / kDown, phi = 2.0 * M_PI * j / kAround;
+      mesh.vertices.push_back (centre + radius * V (std::sin (theta) * std::cos (phi), std::sin (theta) * std::sin (phi), std::cos (theta)));
+    }
+  const auto at = [&] (int i, int j) { return base + i * kAround + (j % kAround); };
+  for (int i = 0; i < kDown; ++i)
+    for (int j = 0; j < kAround; ++j)
+    {
+      mesh.faces.push_back ({at (i, j), at (i + 1, j), at (i + 1, j + 1)});
+      mesh.faces.push_back ({at (i, j), at (i + 1, j + 1), at (i, j + 1)});
+    }
+}
+
+std::vector<V>
+scan (const TriangleMesh& mesh, const V& viewpoint, std::size_t points)
+{
+  RangeScanOptions o;
+  o.viewpoint = viewpoint;
+  o.points = points;
+  std::vector<V> pts;
+  EXPECT_TRUE (scanMesh (mesh, o, pts).ok);
+  return pts;
+}
+
+/** The share of \a indices whose label is the most common among them, and that label. */
+std::pair<double, std::uint32_t>
+commonLabel (const FlowResult& r, const std::vector<std::size_t>& indices)
+{
+  std::map<std::uint32_t, std::size_t> count;
+  for (std::size_t i : indices)
+    ++count[r.point_labels[i]];
+  const auto best = std::max_element (count.begin (), count.end (), [] (const auto& a, const auto& b) { return a.second < b.second; });
+  return {static_cast<double> (best->second) / static_cast<double> (indices.size ()), best->first};
+}
+
+} // namespace
+
+TEST (HiddenSide, MirrorsTheSeenHalfOfABallOntoItsBack)
+{
+  TriangleMesh ball;
+  addSphere (ball, V::Zero (), 1.0);
+  const V sensor (0, 0, 10);
+  const std::vector<V> pts = scan (ball, sensor, 4000);
+  const std::vector<V> hidden = core::mirroredHiddenSide (pts, sensor);
+  ASSERT_GT (hidden.size (), pts.size () / 2);
+  std::vector<double> off_sphere;
+  double mean_z = 0.0;
+  for (const V& h : hidden)
+  {
+    EXPECT_LT (h.z (), 0.25); // behind the rim (which lies at z = 0.1 seen from z = 10)
+    off_sphere.push_back (std::abs (h.norm () - 1.0));
+    mean_z += h.z () / static_cast<double> (hidden.size ());
+  }
+  // A guess, not the truth: the rim samples lie a little before the limb, so the guessed back is
+  // somewhat shallower than the ball's (mean z -0.57 on the true back).
+  EXPECT_LT (mean_z, -0.3);
+  std::nth_element (off_sphere.begin (), off_sphere.begin () + static_cast<long> (off_sphere.size () / 2), off_sphere.end ());
+  EXPECT_LT (off_sphere[off_sphere.size () / 2], 0.25); // near the ball's true back
+}
+
+TEST (HiddenSide, NothingBehindTheInsideOfABowl)
+{
+  // The inside of a bowl seen from above: every sample lies deeper than the rim, nothing to mirror.
+  TriangleMesh ball;
+  addSphere (ball, V::Zero (), 1.0);
+  std::vector<V> pts;
+  for (const V& p : scan (ball, V (0, 0, -10), 4000)) // the lower half: seen from below, and ...
+    if (p.z () < -0.2)
+      pts.push_back (p);                             // ... from above, through the opening
+  EXPECT_TRUE (core::mirroredHiddenSide (pts, V (0, 0, 10)).empty ());
+}
+
+TEST (HiddenSide, PartsOfAScanBecomeTheirOwnFeatures)
+{
+  // Two balls side by side, seen from the front: the big one and the small one are two parts.
+  TriangleMesh mesh;
+  addSphere (mesh, V::Zero (), 1.0);
+  addSphere (mesh, V (1.5, 0, 0), 0.6);
+  const V sensor (0.5, 0, 12);
+  const std::vector<V> pts = scan (mesh, sensor, 6000);
+  std::vector<std::size_t> big, small;
+  for (std::size_t i = 0; i < pts.size (); ++i)
+    (std::abs ((pts[i] - V (1.5, 0, 0)).norm () - 0.6) < std::abs (pts[i].norm () - 1.0) ? small : big).push_back (i);
+  ASSERT_GT (small.size (), 500u);
+
+  const FlowResult r = segmentWith (pts, [&] (FlowParameters& p) { p.interior.viewpoint = sensor; });
+  EXPECT_GT (r.hidden_side_vertices, pts.size () / 2);
+  ASSERT_EQ (r.point_labels.size (), pts.size ()); // the added vertices label no point
+  const auto [big_share, big_label] = commonLabel (r, big);
+  const auto [small_share, small_label] = commonLabel (r, small);
+  EXPECT_GT (big_share, 0.9);
+  EXPECT_GT (small_share, 0.9);
+  EXPECT_NE (big_label, small_label);
+
+  const FlowResult off = segmentWith (pts, [&] (FlowParameters& p) {
+    p.interior.viewpoint = sensor;
+    p.interior.hidden_side = false;
+  });
+  EXPECT_EQ (off.hidden_side_vertices, 0u);
+  EXPECT_EQ (off.vertices.size () + r.hidden_side_vertices, r.vertices.size ());
+}
+
+TEST (HiddenSide, TinyPocketsOfInsideCellsAreDropped)
+{
+  TriangleMesh ball;
+  addSphere (ball, V::Zero (), 1.0);
+  FlowResult r = segmentWith (scan (ball, V (0, 0, 10), 3000), [] (FlowParameters& p) { p.interior.viewpoint = V (0, 0, 10); });
+  // An outside cell among outside cells, labelled inside by hand: a pocket cut off from the rest.
+  std::size_t pocket = r.cells.size (), inside = 0;
+  for (std::size_t c = 0; c < r.cells.size (); ++c)
+  {
+    inside += r.cells[c].inside;
+    bool lonely = !r.cells[c].inside;
+    for (int i = 0; i < 4 && lonely; ++i)
+      lonely = r.cells[c].neighbors[i] >= 0 && !r.cells[static_cast<std::size_t> (r.cells[c].neighbors[i])].inside;
+    if (lonely && pocket == r.cells.size ())
+      pocket = c;
+  }
+  ASSERT_LT (pocket, r.cells.size ());
+  r.cells[pocket].inside = 1;
+  EXPECT_EQ (core::dropInteriorIslands (r, core::kInteriorIslandShare), 1u);
+  EXPECT_EQ (r.cells[pocket].inside, 0);
+  std::size_t after = 0;
+  for (const FlowCell& c : r.cells)
+    after += c.inside;
+  EXPECT_EQ (after, inside); // the ball's interior is one group and stays
+  EXPECT_EQ (core::dropInteriorIslands (r, core::kInteriorIslandShare), 0u);
+}
