@@ -5,6 +5,7 @@
 #include "core/preparation/hidden_side.h"
 
 #include "core/geometry/view_image.h"
+#include "core/support/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -142,29 +143,34 @@ void
 smoothRimRanges (const SensorView& v, std::vector<double>& rim_range)
 {
   const std::size_t n = v.range.size ();
-  std::vector<double> next (rim_range);
-  for (int pass = 0; pass < kRimSmoothingPasses; ++pass)
+  // The neighbours each sample averages over (itself included), gathered once.
+  std::vector<std::size_t> first (n + 1, 0);
+  std::vector<std::size_t> partners;
+  for (std::size_t s = 0; s < n; ++s)
   {
-    for (std::size_t s = 0; s < n; ++s)
-    {
-      if (std::isnan (rim_range[s]))
-        continue;
-      double sum = 0.0;
-      int count = 0;
-      for (std::size_t j = 0; j < SensorView::kRow; ++j) // column 0: the sample itself
+    if (!std::isnan (rim_range[s]))
+      for (std::size_t j = 0; j < SensorView::kRow; ++j)
       {
         const int o = v.ids[s * SensorView::kRow + j];
         if (o < 0)
           continue;
         const std::size_t u = static_cast<std::size_t> (o);
         if (!std::isnan (rim_range[u]) && std::abs (v.range[u] - v.range[s]) < kRimDepthJump * v.footprint * v.range[s])
-        {
-          sum += rim_range[u];
-          ++count;
-        }
+          partners.push_back (u);
       }
-      next[s] = std::max (sum / count, v.range[s]);
-    }
+    first[s + 1] = partners.size ();
+  }
+  std::vector<double> next (rim_range);
+  for (int pass = 0; pass < kRimSmoothingPasses; ++pass)
+  {
+    parallelFor (n, [&] (std::size_t s) {
+      if (first[s + 1] == first[s])
+        return;
+      double sum = 0.0;
+      for (std::size_t k = first[s]; k < first[s + 1]; ++k)
+        sum += rim_range[partners[k]];
+      next[s] = std::max (sum / static_cast<double> (first[s + 1] - first[s]), v.range[s]);
+    });
     rim_range.swap (next);
   }
 }
