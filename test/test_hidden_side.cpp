@@ -158,3 +158,14 @@ TEST (HiddenSide, TinyPocketsOfInsideCellsAreDropped)
   EXPECT_EQ (after, inside); // the ball's interior is one group and stays
   EXPECT_EQ (core::dropInteriorIslands (r, core::kInteriorIslandShare), 0u);
 }
+
+TEST (HiddenSide, NoGuessedVertexCopiesASampleOrAnother)
+{
+  const std::vector<V> samples{V (0, 0, 0), V (1, 0, 0)};
+  const std::vector<V> mirrored{V (0, 0, 0), V (0, 0, -1), V (2, 0, 0), V (0, 0, -1), V (1, 0, 0), V (0, 0, -2)};
+  const std::vector<V> kept = core::withoutCopies (samples, mirrored);
+  ASSERT_EQ (kept.size (), 3u);
+  EXPECT_EQ (kept[0], V (0, 0, -1));
+  EXPECT_EQ (kept[1], V (2, 0, 0));
+  EXPECT_EQ (kept[2], V (0, 0, -2));
+}

@@ -192,7 +192,34 @@ mirroredHiddenSide (const std::vector<Eigen::Vector3d>& samples, const Eigen::Ve
     if (depth > kMinMirrorDepth * v.footprint * v.range[s])
       mirrored.push_back (viewpoint + (samples[s] - viewpoint) * ((rim_range[s] + depth) / v.range[s]));
   }
-  return mirrored;
+  return withoutCopies (samples, mirrored);
+}
+
+std::vector<Eigen::Vector3d>
+withoutCopies (const std::vector<Eigen::Vector3d>& samples, const std::vector<Eigen::Vector3d>& mirrored)
+{
+  const auto less = [] (const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::lexicographical_compare (a.data (), a.data () + 3, b.data (), b.data () + 3);
+  };
+  std::vector<Eigen::Vector3d> seen (samples);
+  std::sort (seen.begin (), seen.end (), less);
+  std::vector<Eigen::Vector3d> kept;
+  kept.reserve (mirrored.size ());
+  std::vector<Eigen::Vector3d> taken;
+  for (const Eigen::Vector3d& m : mirrored)
+    if (!std::binary_search (seen.begin (), seen.end (), m, less))
+      kept.push_back (m);
+  std::vector<std::size_t> order (kept.size ());
+  for (std::size_t i = 0; i < order.size (); ++i)
+    order[i] = i;
+  std::stable_sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) { return less (kept[a], kept[b]); });
+  std::vector<char> copy (kept.size (), 0);
+  for (std::size_t i = 1; i < order.size (); ++i)
+    copy[order[i]] = kept[order[i]] == kept[order[i - 1]];
+  for (std::size_t i = 0; i < kept.size (); ++i)
+    if (!copy[i])
+      taken.push_back (kept[i]);
+  return taken;
 }
 
 } // namespace core

@@ -41,5 +41,10 @@ constexpr double kMinMirrorDepth = 0.5;
 std::vector<Eigen::Vector3d>
 mirroredHiddenSide (const std::vector<Eigen::Vector3d>& samples, const Eigen::Vector3d& viewpoint);
 
+/** \brief \a mirrored without the points equal to one of \a samples or to an earlier point of
+  * \a mirrored, in their order: the triangulation's vertices must be distinct. */
+std::vector<Eigen::Vector3d>
+withoutCopies (const std::vector<Eigen::Vector3d>& samples, const std::vector<Eigen::Vector3d>& mirrored);
+
 } // namespace core
 } // namespace pcl_flowseg
