@@ -8,9 +8,8 @@
 #include <flann/flann.hpp>
 
 #include <algorithm>
-#include <limits>
-
 #include <cmath>
+#include <limits>
 
 namespace pcl_flowseg {
 namespace core {
