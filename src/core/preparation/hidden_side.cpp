@@ -8,7 +8,9 @@
 #include "core/support/parallel.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <set>
 
 namespace pcl_flowseg {
 namespace core {
@@ -198,28 +200,14 @@ mirroredHiddenSide (const std::vector<Eigen::Vector3d>& samples, const Eigen::Ve
 std::vector<Eigen::Vector3d>
 withoutCopies (const std::vector<Eigen::Vector3d>& samples, const std::vector<Eigen::Vector3d>& mirrored)
 {
-  const auto less = [] (const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    return std::lexicographical_compare (a.data (), a.data () + 3, b.data (), b.data () + 3);
-  };
-  std::vector<Eigen::Vector3d> seen (samples);
-  std::sort (seen.begin (), seen.end (), less);
+  std::set<std::array<double, 3>> taken;
+  for (const Eigen::Vector3d& p : samples)
+    taken.insert ({p.x (), p.y (), p.z ()});
   std::vector<Eigen::Vector3d> kept;
-  kept.reserve (mirrored.size ());
-  std::vector<Eigen::Vector3d> taken;
   for (const Eigen::Vector3d& m : mirrored)
-    if (!std::binary_search (seen.begin (), seen.end (), m, less))
+    if (taken.insert ({m.x (), m.y (), m.z ()}).second)
       kept.push_back (m);
-  std::vector<std::size_t> order (kept.size ());
-  for (std::size_t i = 0; i < order.size (); ++i)
-    order[i] = i;
-  std::stable_sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) { return less (kept[a], kept[b]); });
-  std::vector<char> copy (kept.size (), 0);
-  for (std::size_t i = 1; i < order.size (); ++i)
-    copy[order[i]] = kept[order[i]] == kept[order[i - 1]];
-  for (std::size_t i = 0; i < kept.size (); ++i)
-    if (!copy[i])
-      taken.push_back (kept[i]);
-  return taken;
+  return kept;
 }
 
 } // namespace core
