@@ -5,6 +5,7 @@
 #include "core/interior/denoising.h"
 
 #include "core/delaunay/delaunay_cells.h"
+#include "core/support/parallel.h"
 
 #include <flann/flann.hpp>
 
@@ -46,13 +47,17 @@ fitPlane (const std::vector<Eigen::Vector3d>& points, const int* ids, std::size_
 
 namespace {
 
-/** Calls \a visit (i, fit) with the plane fit of the neighbourhood in every row i of \a hoods. */
+/** Calls \a visit (i, fit) with the plane fit of the neighbourhood in every row i of \a hoods, on
+  * all cores: \a visit must write only what belongs to row i. */
 template <typename Visit>
 void
 forEachNeighbourhood (const std::vector<Eigen::Vector3d>& points, const Neighbourhoods& hoods, int dimension, Visit visit)
 {
-  for (std::size_t i = 0; i + 1 < hoods.first.size (); ++i)
+  if (hoods.first.empty ())
+    return;
+  parallelFor (hoods.first.size () - 1, [&] (std::size_t i) {
     visit (i, fitPlane (points, hoods.ids.data () + hoods.first[i], hoods.first[i + 1] - hoods.first[i], dimension));
+  });
 }
 
 /** The upper median of \a values (reordered); 0 when empty. */

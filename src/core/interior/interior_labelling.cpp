@@ -11,6 +11,7 @@
 #include "core/interior/greedy_labelling.h"
 #include "core/interior/interior_islands.h"
 #include "core/interior/manifold_repair.h"
+#include "core/support/parallel.h"
 
 #include <algorithm>
 #include <utility>
@@ -46,7 +47,7 @@ labelRawSample (FlowResult& r, const InteriorParameters& params, const std::vect
 
 /** Gives every cell of \a r the label of the cell of \a smooth_cells (a triangulation of \a points)
   * that holds its centroid; each walk starts at a smoothed cell of the cell's first vertex, since
-  * the sample moved little. */
+  * the sample moved little. The walks are independent: they run on all cores. */
 void
 transferLabels (const std::vector<Eigen::Vector3d>& points, const std::vector<FlowCell>& smooth_cells, FlowResult& r)
 {
@@ -55,12 +56,12 @@ transferLabels (const std::vector<Eigen::Vector3d>& points, const std::vector<Fl
   for (std::size_t k = 0; k < smooth_cells.size (); ++k)
     for (int i = 0; i <= d; ++i)
       cell_of_vertex[static_cast<std::size_t> (smooth_cells[k].vertices[i])] = static_cast<int> (k);
-  for (FlowCell& c : r.cells)
-  {
+  parallelFor (r.cells.size (), [&] (std::size_t k) {
+    FlowCell& c = r.cells[k];
     const int hint = cell_of_vertex[static_cast<std::size_t> (c.vertices[0])];
     const int found = locateCell (points, smooth_cells, d, c.centroid, hint);
     c.inside = found >= 0 ? smooth_cells[static_cast<std::size_t> (found)].inside : 0;
-  }
+  });
 }
 
 /** Noisy sample: in/out decided on a smoothed copy of \a points (the vertices, or the same vertices
