@@ -69,6 +69,7 @@ const char* const kUsage =
   "                         [--tolerance T] [--stump-ratio S] [--compact-rho R] [--compact-size S]\n"
   "                         [--paper-rule]   (merge parameters: the library's defaults unless given)\n"
   "                         [--significance F (0: every feature)] [--min-part-share F]\n"
+  "                         [--single-view-min-part-share F]\n"
   "                         [--noise F (0)] [--outliers F (0)] [--scan-from six|X,Y,Z]\n"
   "                         [--outlier-removal auto|off|on (auto)] [--smooth auto|off|on (auto)] [--smooth-passes N (6)]\n"
   "  --noise F: Gaussian noise of standard deviation F times the bounding-box diagonal\n"
@@ -177,13 +178,17 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
       if (!parseScanDirections (argv[++i], o.scan_directions))
         return error = "--scan-from needs six or a direction X,Y,Z", false;
     }
-    else if ((a == "--noise" || a == "--outliers" || a == "--min-part-share") && has_value)
+    else if ((a == "--noise" || a == "--outliers" || a == "--min-part-share" || a == "--single-view-min-part-share") &&
+             has_value)
     {
       char* end = nullptr;
       const double v = std::strtod (argv[++i], &end);
       if (*end || !(v >= 0.0 && v < 1.0))
         return error = a + " needs a number in [0, 1)", false;
-      (a == "--noise" ? o.noise : a == "--outliers" ? o.outliers : o.flow.merge.min_part_share) = v;
+      (a == "--noise"              ? o.noise
+       : a == "--outliers"         ? o.outliers
+       : a == "--min-part-share"   ? o.flow.merge.min_part_share
+                                   : o.flow.merge.single_view_min_part_share) = v;
     }
     else if ((a == "--tolerance" || a == "--stump-ratio" || a == "--compact-rho" || a == "--compact-size") && has_value)
     {
@@ -895,10 +900,10 @@ main (int argc, char** argv)
   std::printf ("PSB: %zu models from %s, %zu points per model, seed %u, rho", models.size (), o.data.c_str (), o.points, o.seed);
   for (double rho : o.rhos)
     std::printf (" %g", rho);
-  std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g, smallest part share %g, "
-               "significance %g, noise %g, outliers %g",
+  std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g, smallest part share %g "
+               "(single views %g), significance %g, noise %g, outliers %g",
                o.flow.merge.sampling_tolerance, o.flow.merge.stump_ratio, o.flow.merge.compact_rho, o.flow.merge.compact_size,
-               o.flow.merge.min_part_share, o.significance, o.noise, o.outliers);
+               o.flow.merge.min_part_share, o.flow.merge.single_view_min_part_share, o.significance, o.noise, o.outliers);
   std::printf ("; errors: area-weighted Rand-index error, mean over the model's human segmentations\n\n");
   std::vector<ModelResult> results;
   for (std::size_t i = 0; i < models.size (); ++i)

@@ -13,8 +13,8 @@ namespace {
 using namespace pcl_flowseg_python;
 
 const char* const kNames[] = {"dimension", "planar_tolerance", "rho", "sampling_tolerance", "stump_ratio", "compact_rho",
-                              "compact_size", "min_part_share", "separate", "denoising", "viewpoint", "features",
-                              "threads", "memory_limit",
+                              "compact_size", "min_part_share", "single_view_min_part_share", "separate", "denoising",
+                              "viewpoint", "features", "threads", "memory_limit",
                               "significance", "mesh_points", "seed", "threshold", "allow_mirror", "alignment_points"};
 
 ArgumentValue

@@ -232,7 +232,10 @@ TEST (Degenerate, AbsurdParametersAreRejected)
     expectRefused (pts, [&] (FlowParameters& p) { p.merge.compact_rho = value; }, "compact rho");
   }
   for (double value : {-0.1, 1.0, 5.0, std::nan (""), std::numeric_limits<double>::infinity ()})
+  {
     expectRefused (pts, [&] (FlowParameters& p) { p.merge.min_part_share = value; }, "smallest part share");
+    expectRefused (pts, [&] (FlowParameters& p) { p.merge.single_view_min_part_share = value; }, "part share of single views");
+  }
   FlowResult r = segmentOrDie (pts);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (-2.0), r).ok);
   EXPECT_FALSE (remergeFlowSegmentation (flowseg_test::mergeParameters (1.5, -1.0), r).ok);

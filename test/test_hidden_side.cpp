@@ -132,6 +132,32 @@ TEST (HiddenSide, PartsOfAScanBecomeTheirOwnFeatures)
   EXPECT_EQ (off.vertices.size () + r.hidden_side_vertices, r.vertices.size ());
 }
 
+TEST (HiddenSide, ASingleViewTakesItsOwnSmallestPartShare)
+{
+  // The small ball holds about a sixth of the guessed volume: it stays a part of its own under a
+  // whole sample's share of 0.3, and joins the big ball under a single view's share of 0.3.
+  TriangleMesh mesh;
+  addSphere (mesh, V::Zero (), 1.0);
+  addSphere (mesh, V (1.5, 0, 0), 0.6);
+  const V sensor (0.5, 0, 12);
+  const std::vector<V> pts = scan (mesh, sensor, 6000);
+  std::vector<std::size_t> big, small;
+  for (std::size_t i = 0; i < pts.size (); ++i)
+    (std::abs ((pts[i] - V (1.5, 0, 0)).norm () - 0.6) < std::abs (pts[i].norm () - 1.0) ? small : big).push_back (i);
+  const auto labelsWith = [&] (double whole, double single_view) {
+    const FlowResult r = segmentWith (pts, [&] (FlowParameters& p) {
+      p.interior.viewpoint = sensor;
+      p.merge.min_part_share = whole;
+      p.merge.single_view_min_part_share = single_view;
+    });
+    return std::make_pair (commonLabel (r, big).second, commonLabel (r, small).second);
+  };
+  const auto whole = labelsWith (0.3, 0.0);
+  EXPECT_NE (whole.first, whole.second);
+  const auto single_view = labelsWith (0.0, 0.3);
+  EXPECT_EQ (single_view.first, single_view.second);
+}
+
 TEST (HiddenSide, TinyPocketsOfInsideCellsAreDropped)
 {
   TriangleMesh ball;

@@ -230,6 +230,7 @@ expectSameMerge (const pcl_flowseg::MergeParameters& a, const pcl_flowseg::Merge
   EXPECT_EQ (a.compact_rho, b.compact_rho);
   EXPECT_EQ (a.compact_size, b.compact_size);
   EXPECT_EQ (a.min_part_share, b.min_part_share);
+  EXPECT_EQ (a.single_view_min_part_share, b.single_view_min_part_share);
 }
 } // namespace
 
@@ -242,6 +243,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   seg.setCompactRho (1.4);
   seg.setCompactSize (1.5);
   seg.setMinPartShare (0.01);
+  seg.setSingleViewMinPartShare (0.02);
   seg.setDimension (2);
   seg.setPlanarTolerance (1e-6);
   seg.setOutlierRemoval (pcl_flowseg::OutlierRemoval::Always);
@@ -260,6 +262,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   EXPECT_EQ (p.merge.compact_rho, 1.4);
   EXPECT_EQ (p.merge.compact_size, 1.5);
   EXPECT_EQ (p.merge.min_part_share, 0.01);
+  EXPECT_EQ (p.merge.single_view_min_part_share, 0.02);
   EXPECT_EQ (p.preparation.dimension, pcl_flowseg::DimensionMode::Planar);
   EXPECT_EQ (p.preparation.planar_tolerance, 1e-6);
   EXPECT_EQ (p.preparation.outliers, pcl_flowseg::OutlierRemoval::Always);

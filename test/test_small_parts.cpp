@@ -129,6 +129,7 @@ TEST (SmallParts, ThePaperRuleAndShareZeroKeepEverySegment)
   FlowParameters params;
   params.merge.usePaperRule ();
   EXPECT_EQ (params.merge.min_part_share, 0.0);
+  EXPECT_EQ (params.merge.single_view_min_part_share, 0.0);
   const auto pts = shapeSample ("animal3d", 3000);
   const double share = FlowParameters ().merge.min_part_share;
   for (const FlowResult& r : {segmentOrFail (pts, params), segmentOrFail (pts, withMinPartShare (0.0))})

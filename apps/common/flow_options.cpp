@@ -37,8 +37,11 @@ addMergeOptions (OptionParser& p, pcl_flowseg::MergeParameters& merge)
   p.number ("--min-part-share", "F",
             "smallest part, as a share of its side's volume in [0, 1): smaller\nsegments join the neighbour across their widest saddle; 0 = keep all",
             merge.min_part_share, mergeCheck (&M::min_part_share));
+  p.number ("--single-view-min-part-share", "F",
+            "smallest part on a single view whose hidden side is guessed\n(--use-sensor-origin), in [0, 1), in place of --min-part-share",
+            merge.single_view_min_part_share, mergeCheck (&M::single_view_min_part_share));
   pcl_flowseg::MergeParameters* m = &merge;
-  p.action ("--paper-rule", "the paper's merging rule alone: tolerance, stump ratio, compact\nsize and smallest part share 0",
+  p.action ("--paper-rule", "the paper's merging rule alone: tolerance, stump ratio, compact\nsize and smallest part shares 0",
             [m] () { m->usePaperRule (); });
 }
 

@@ -178,6 +178,8 @@ addFlowKeywords (std::map<std::string, Keyword>& k)
   k["compact_rho"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::compact_rho)};
   k["compact_size"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::compact_size)};
   k["min_part_share"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::min_part_share)};
+  k["single_view_min_part_share"] = {kFlowArguments,
+                                     flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::single_view_min_part_share)};
   k["separate"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
                      return toFlag (n, v, c.flow.interior.separate);
                    }};
@@ -317,6 +319,7 @@ flowArguments (const pcl_flowseg::FlowParameters& p)
   a.emplace_back ("compact_rho", p.merge.compact_rho);
   a.emplace_back ("compact_size", p.merge.compact_size);
   a.emplace_back ("min_part_share", p.merge.min_part_share);
+  a.emplace_back ("single_view_min_part_share", p.merge.single_view_min_part_share);
   a.emplace_back ("separate", p.interior.separate);
   a.emplace_back ("denoising", kModeNames[static_cast<std::size_t> (p.interior.denoising) % 3]);
   a.emplace_back ("manifold_repair", p.interior.manifold_repair);

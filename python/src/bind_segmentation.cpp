@@ -202,12 +202,14 @@ segment (const py::object& points_object, const py::object& normals_object, cons
 Segmentation
 remerge (const Segmentation& s, const py::kwargs& kwargs)
 {
-  static const std::set<std::string> merge_names = {"rho", "sampling_tolerance", "stump_ratio", "compact_rho", "compact_size",
-                                                     "min_part_share"};
+  static const std::set<std::string> merge_names = {"rho",          "sampling_tolerance", "stump_ratio",
+                                                     "compact_rho",  "compact_size",       "min_part_share",
+                                                     "single_view_min_part_share"};
   for (const auto& item : kwargs)
     if (!merge_names.count (py::str (item.first)))
       throw py::type_error ("remerge: unexpected keyword argument '" + std::string (py::str (item.first)) +
-                            "' (only rho, sampling_tolerance, stump_ratio, compact_rho, compact_size, min_part_share)");
+                            "' (only rho, sampling_tolerance, stump_ratio, compact_rho, compact_size, min_part_share, "
+                            "single_view_min_part_share)");
   CallParameters call;
   call.flow = s.result->parameters;
   pcl_flowseg::MatchParameters unused;
@@ -303,7 +305,7 @@ bindResult (py::module_& m)
           "The shape's signature: its significant interior features as weighted points (needs separate=True).")
       .def ("remerge", &remerge,
             "A copy merged again with other merge parameters (rho, sampling_tolerance, stump_ratio, compact_rho, "
-            "compact_size, min_part_share); cheap: the triangulation and flow are reused.")
+            "compact_size, min_part_share, single_view_min_part_share); cheap: the triangulation and flow are reused.")
       .def ("__repr__", [] (const Segmentation& s) {
         return "<Segmentation " + std::to_string (s.result->dimension) + "D, " + std::to_string (s.result->input_points) +
                " points, " + std::to_string (s.result->features.size ()) + " features>";
@@ -326,7 +328,7 @@ points: (n, 2) or (n, 3) float32/float64 array (2 columns: a 2D shape). NaN/Inf 
 normals: None or (n, 3) array of outward normals (evidence for the interior/exterior separation).
 progress: None or a callable(stage: str, fraction: float), called during the run.
 Keywords (see defaults()): dimension, planar_tolerance, outliers, smoothing, smoothing_passes, rho, sampling_tolerance, stump_ratio,
-    compact_rho, compact_size, min_part_share, separate, denoising, viewpoint, manifold_repair, hidden_side, features, threads, memory_limit,
+    compact_rho, compact_size, min_part_share, single_view_min_part_share, separate, denoising, viewpoint, manifold_repair, hidden_side, features, threads, memory_limit,
     significance.
 Raises ValueError for input that cannot be segmented or a parameter out of range, TypeError for
 an unknown keyword. The GIL is released during the computation.)doc");

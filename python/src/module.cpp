@@ -36,6 +36,7 @@ PYBIND11_MODULE (_pcl_flowseg, m)
     d["stump_ratio"] = merge.stump_ratio;
     d["compact_size"] = merge.compact_size;
     d["min_part_share"] = merge.min_part_share;
+    d["single_view_min_part_share"] = merge.single_view_min_part_share;
     return d;
   }, py::arg ("rho") = pcl_flowseg::MergeParameters ().rho,
      "The merge keywords of the paper's rule alone at rho: segment(points, **paper_rule(1.3)).");

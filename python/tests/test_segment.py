@@ -46,6 +46,7 @@ def test_result_holds_features_adjacency_timings():
 def test_parameters_round_trip():
     points, _ = fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))
     given = dict(rho=1.3, sampling_tolerance=0.25, stump_ratio=0.0, compact_rho=1.5, compact_size=0.0, min_part_share=0.01,
+                 single_view_min_part_share=0.02,
                  denoising="off", outliers="off", smoothing="always", smoothing_passes=1, features="both", threads=1, dimension="spatial", planar_tolerance=1e-6,
                  viewpoint=(0.0, 0.0, 10.0), memory_limit=8 << 30, separate=True, manifold_repair=False, hidden_side=False, significance=0.05)
     seg = fs.segment(points, **given)

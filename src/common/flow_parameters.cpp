@@ -32,6 +32,9 @@ checkMergeParameters (const MergeParameters& m)
     return Status::error ("the compact size must be a finite number >= 0" + got (m.compact_size));
   if (!(m.min_part_share >= 0.0 && m.min_part_share < 1.0))
     return Status::error ("the smallest part share must be a number in [0, 1)" + got (m.min_part_share));
+  if (!(m.single_view_min_part_share >= 0.0 && m.single_view_min_part_share < 1.0))
+    return Status::error ("the smallest part share of single views must be a number in [0, 1)" +
+                          got (m.single_view_min_part_share));
   return Status::success ();
 }
 

@@ -58,7 +58,8 @@ parametersJson (const FlowParameters& p)
   s += ", \"smoothing_passes\": " + std::to_string (p.preparation.smoothing_passes) + "}";
   s += ", \"merge\": {\"rho\": " + num (p.merge.rho) + ", \"sampling_tolerance\": " + num (p.merge.sampling_tolerance) +
        ", \"stump_ratio\": " + num (p.merge.stump_ratio) + ", \"compact_rho\": " + num (p.merge.compact_rho) +
-       ", \"compact_size\": " + num (p.merge.compact_size) + ", \"min_part_share\": " + num (p.merge.min_part_share) + "}";
+       ", \"compact_size\": " + num (p.merge.compact_size) + ", \"min_part_share\": " + num (p.merge.min_part_share) +
+       ", \"single_view_min_part_share\": " + num (p.merge.single_view_min_part_share) + "}";
   s += ", \"interior\": {\"separate\": " + std::string (jsonBool (p.interior.separate)) + ", \"denoising\": ";
   s += modeJson (p.interior.denoising);
   s += ", \"manifold_repair\": " + std::string (jsonBool (p.interior.manifold_repair));

@@ -110,13 +110,17 @@ struct MergeParameters
     * exterior) in [0, 1): a smaller segment joins the neighbour on its side it shares its widest
     * saddle with, so the reported features are parts, not slivers. 0 keeps every segment. */
   double min_part_share = 0.0003;
+  /** The smallest part on a single view whose hidden side was guessed
+    * (FlowResult::hidden_side_vertices > 0), in [0, 1), in place of min_part_share: the guessed
+    * side's thin rims add slivers that are no parts of the object. */
+  double single_view_min_part_share = 0.003;
 
   /** \brief Switches off what goes beyond the paper's rule (sampling tolerance, compact pass,
     * stumps, small parts), keeping rho. */
   void
   usePaperRule ()
   {
-    sampling_tolerance = stump_ratio = compact_size = min_part_share = 0.0;
+    sampling_tolerance = stump_ratio = compact_size = min_part_share = single_view_min_part_share = 0.0;
   }
 
   /** \brief The paper's rule alone at \a rho. */

@@ -76,6 +76,9 @@ public:
   /** \brief pcl_flowseg::MergeParameters::min_part_share. */
   inline void setMinPartShare (double share) { params_.merge.min_part_share = share; }
   inline double getMinPartShare () const { return params_.merge.min_part_share; }
+  /** \brief pcl_flowseg::MergeParameters::single_view_min_part_share. */
+  inline void setSingleViewMinPartShare (double share) { params_.merge.single_view_min_part_share = share; }
+  inline double getSingleViewMinPartShare () const { return params_.merge.single_view_min_part_share; }
 
   /** \brief pcl_flowseg::PreparationParameters::dimension as a number: 0 = automatic, 2 or 3. */
   inline void setDimension (int dimension) { params_.preparation.dimension = static_cast<pcl_flowseg::DimensionMode> (dimension); }

@@ -30,7 +30,8 @@ mergeManifolds (const MergeParameters& params, FlowResult& result)
   assignCellsToTheirSide (result, groups);
   if (params.stump_ratio > 0.0)
     reclaimStumps (result, groupHeights (result, groups), params.stump_ratio, groups.of_cell);
-  absorbSmallGroups (result, params.min_part_share, groups);
+  absorbSmallGroups (result, result.hidden_side_vertices > 0 ? params.single_view_min_part_share : params.min_part_share,
+                     groups);
   storeSegments (groups, result);
 }
 

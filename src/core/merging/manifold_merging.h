@@ -18,9 +18,10 @@ namespace core {
   *   3. every cell joins a group of its own side (side_flooding.h);
   *   4. thin parts take back their stumps, when stump_ratio > 0 (stump_reclaim.h);
   *   5. segments too small to be parts join a neighbour, when min_part_share > 0
-  *      (small_part_merge.h);
+  *      (single_view_min_part_share on a single view with a guessed hidden side;
+  *      small_part_merge.h);
   *   6. the groups become ordered segments (segment_assembly.h).
-  * With sampling_tolerance, stump_ratio, compact_size and min_part_share 0 this is the paper's
+  * With sampling_tolerance, stump_ratio, compact_size and both part shares 0 this is the paper's
   * segmentation. */
 void
 mergeManifolds (const MergeParameters& params, FlowResult& result);
