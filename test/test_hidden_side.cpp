@@ -65,6 +65,27 @@ commonLabel (const FlowResult& r, const std::vector<std::size_t>& indices)
   return {static_cast<double> (best->second) / static_cast<double> (indices.size ()), best->first};
 }
 
+/** Two balls side by side (radii 1 and 0.6) scanned from the front, and which samples lie on which. */
+struct TwoBallScan
+{
+  V sensor{0.5, 0, 12};
+  std::vector<V> pts;
+  std::vector<std::size_t> big, small;
+};
+
+TwoBallScan
+scanTwoBalls ()
+{
+  TwoBallScan s;
+  TriangleMesh mesh;
+  addSphere (mesh, V::Zero (), 1.0);
+  addSphere (mesh, V (1.5, 0, 0), 0.6);
+  s.pts = scan (mesh, s.sensor, 6000);
+  for (std::size_t i = 0; i < s.pts.size (); ++i)
+    (std::abs ((s.pts[i] - V (1.5, 0, 0)).norm () - 0.6) < std::abs (s.pts[i].norm () - 1.0) ? s.small : s.big).push_back (i);
+  return s;
+}
+
 } // namespace
 
 TEST (HiddenSide, MirrorsTheSeenHalfOfABallOntoItsBack)
@@ -104,28 +125,21 @@ TEST (HiddenSide, NothingBehindTheInsideOfABowl)
 
 TEST (HiddenSide, PartsOfAScanBecomeTheirOwnFeatures)
 {
-  // Two balls side by side, seen from the front: the big one and the small one are two parts.
-  TriangleMesh mesh;
-  addSphere (mesh, V::Zero (), 1.0);
-  addSphere (mesh, V (1.5, 0, 0), 0.6);
-  const V sensor (0.5, 0, 12);
-  const std::vector<V> pts = scan (mesh, sensor, 6000);
-  std::vector<std::size_t> big, small;
-  for (std::size_t i = 0; i < pts.size (); ++i)
-    (std::abs ((pts[i] - V (1.5, 0, 0)).norm () - 0.6) < std::abs (pts[i].norm () - 1.0) ? small : big).push_back (i);
-  ASSERT_GT (small.size (), 500u);
+  // The big ball and the small one are two parts.
+  const TwoBallScan s = scanTwoBalls ();
+  ASSERT_GT (s.small.size (), 500u);
 
-  const FlowResult r = segmentWith (pts, [&] (FlowParameters& p) { p.interior.viewpoint = sensor; });
-  EXPECT_GT (r.hidden_side_vertices, pts.size () / 2);
-  ASSERT_EQ (r.point_labels.size (), pts.size ()); // the added vertices label no point
-  const auto [big_share, big_label] = commonLabel (r, big);
-  const auto [small_share, small_label] = commonLabel (r, small);
+  const FlowResult r = segmentWith (s.pts, [&] (FlowParameters& p) { p.interior.viewpoint = s.sensor; });
+  EXPECT_GT (r.hidden_side_vertices, s.pts.size () / 2);
+  ASSERT_EQ (r.point_labels.size (), s.pts.size ()); // the added vertices label no point
+  const auto [big_share, big_label] = commonLabel (r, s.big);
+  const auto [small_share, small_label] = commonLabel (r, s.small);
   EXPECT_GT (big_share, 0.9);
   EXPECT_GT (small_share, 0.9);
   EXPECT_NE (big_label, small_label);
 
-  const FlowResult off = segmentWith (pts, [&] (FlowParameters& p) {
-    p.interior.viewpoint = sensor;
+  const FlowResult off = segmentWith (s.pts, [&] (FlowParameters& p) {
+    p.interior.viewpoint = s.sensor;
     p.interior.hidden_side = false;
   });
   EXPECT_EQ (off.hidden_side_vertices, 0u);
@@ -136,21 +150,14 @@ TEST (HiddenSide, ASingleViewTakesItsOwnSmallestPartShare)
 {
   // The small ball holds about a sixth of the guessed volume: it stays a part of its own under a
   // whole sample's share of 0.3, and joins the big ball under a single view's share of 0.3.
-  TriangleMesh mesh;
-  addSphere (mesh, V::Zero (), 1.0);
-  addSphere (mesh, V (1.5, 0, 0), 0.6);
-  const V sensor (0.5, 0, 12);
-  const std::vector<V> pts = scan (mesh, sensor, 6000);
-  std::vector<std::size_t> big, small;
-  for (std::size_t i = 0; i < pts.size (); ++i)
-    (std::abs ((pts[i] - V (1.5, 0, 0)).norm () - 0.6) < std::abs (pts[i].norm () - 1.0) ? small : big).push_back (i);
+  const TwoBallScan s = scanTwoBalls ();
   const auto labelsWith = [&] (double whole, double single_view) {
-    const FlowResult r = segmentWith (pts, [&] (FlowParameters& p) {
-      p.interior.viewpoint = sensor;
+    const FlowResult r = segmentWith (s.pts, [&] (FlowParameters& p) {
+      p.interior.viewpoint = s.sensor;
       p.merge.min_part_share = whole;
       p.merge.single_view_min_part_share = single_view;
     });
-    return std::make_pair (commonLabel (r, big).second, commonLabel (r, small).second);
+    return std::make_pair (commonLabel (r, s.big).second, commonLabel (r, s.small).second);
   };
   const auto whole = labelsWith (0.3, 0.0);
   EXPECT_NE (whole.first, whole.second);
