@@ -9,6 +9,7 @@
  */
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/evaluation/mesh_inside_test.h>
+#include "mls_prepass.h"
 
 
 #include <algorithm>
@@ -58,6 +59,7 @@ struct Options
   bool verbose = false;
   pcl_flowseg::Denoising denoising = pcl_flowseg::Denoising::Automatic;
   pcl_flowseg::PreparationParameters preparation; // its smoothing and smoothing_passes
+  double mls_radius = 0.0; // > 0: PCL's MovingLeastSquares before the segmentation, radius in sample spacings
 };
 
 bool
@@ -82,11 +84,13 @@ parseOptions (int argc, char** argv, Options& o)
       o.preparation.smoothing = m == "off" ? pcl_flowseg::Smoothing::Off : m == "on" ? pcl_flowseg::Smoothing::Always : pcl_flowseg::Smoothing::Automatic;
     }
     else if (a == "--smooth-passes" && i + 1 < argc) o.preparation.smoothing_passes = static_cast<unsigned> (std::atoi (argv[++i]));
+    else if (a == "--mls" && i + 1 < argc && (o.mls_radius = std::atof (argv[i + 1])) >= 0.0) ++i;
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_interior [--meshes DIR] [--points 5000,50000] [--noise 0,0.0025,0.005] [--only NAME]\n"
-                            "                              [--denoise auto|off|on] [--smooth auto|off|on] [--smooth-passes N] [--verbose]\n"
+                            "                              [--denoise auto|off|on] [--smooth auto|off|on] [--smooth-passes N] [--mls R] [--verbose]\n"
                             "  --smooth, --smooth-passes: smoothing before the triangulation (PreparationParameters::smoothing, ::smoothing_passes)\n"
+                            "  --mls R: PCL's MovingLeastSquares (quadratic) first, radius R sample spacings (0: none)\n"
                             "  noise: standard deviation as a fraction of the bounding-box diagonal\n");
       return false;
     }
@@ -104,6 +108,8 @@ evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, con
              double count, double noise, bool first_noise, const Options& o, PivotRow& pivot, Summary& summary)
 {
   auto pts = pcl_flowseg::sampleMeshSurface (mesh, static_cast<std::size_t> (count), noise * mesh.diagonal (), 1);
+  if (o.mls_radius > 0.0)
+    pts = flowseg_bench::movingLeastSquares (pts, o.mls_radius);
   pcl_flowseg::FlowParameters params;
   params.preparation.dimension = pcl_flowseg::DimensionMode::Spatial;
   params.interior.denoising = o.denoising;

@@ -12,6 +12,7 @@
 #include <pcl_flowseg/common/feature_significance.h>
 #include <pcl_flowseg/io/atomic_file.h>
 #include "mesh_picture.h"
+#include "mls_prepass.h"
 #include "sdf_peer.h"
 
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
@@ -56,6 +57,7 @@ struct Options
   double significance = 0.0; // > 0: only features above this share of the feature volume label faces
   double noise = 0.0;        // Gaussian noise, standard deviation as a share of the mesh's bounding-box diagonal
   double outliers = 0.0;     // share of the sample replaced by points uniform in its bounding box
+  double mls_radius = 0.0;   // > 0: PCL's MovingLeastSquares before flowseg, radius in sample spacings
   std::vector<Eigen::Vector3d> scan_directions; // non-empty: single views from these directions
 };
 
@@ -72,12 +74,16 @@ const char* const kUsage =
   "                         [--single-view-min-part-share F]\n"
   "                         [--noise F (0)] [--outliers F (0)] [--scan-from six|X,Y,Z]\n"
   "                         [--outlier-removal auto|off|on (auto)] [--smooth auto|off|on (auto)] [--smooth-passes N (6)]\n"
+  "                         [--mls R (0)]\n"
   "  --noise F: Gaussian noise of standard deviation F times the bounding-box diagonal\n"
   "  --outliers F: that share of the sample replaced by points uniform in its bounding box\n"
   "  --scan-from: single views instead of whole samples, the sensor 3 bounding radii from the centre\n"
   "               in the direction X,Y,Z or in each of the six axis directions (six); --noise is\n"
   "               then depth noise; the error counts only the faces the scan sees, averaged over views\n"
   "  --outlier-removal, --smooth, --smooth-passes: PreparationParameters::outliers, ::smoothing, ::smoothing_passes\n"
+  "  --mls R: PCL's MovingLeastSquares (quadratic) on each sample before flowseg, radius R sample\n"
+  "           spacings (0: none), to weigh it against the module's smoothing (--smooth); its\n"
+  "           time is counted in flowseg's\n"
   "  --paper-rule: the paper's merging rule alone (tolerance, stump ratio, compact size 0)\n"
   "  --significance F: only features above F of the features' volume label faces; the faces of the\n"
   "                    others take the label of the nearest significant samples\n"
@@ -232,6 +238,13 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
     }
     else if (a == "--smooth-passes" && has_value)
       o.flow.preparation.smoothing_passes = static_cast<unsigned> (std::strtoul (argv[++i], nullptr, 10));
+    else if (a == "--mls" && has_value)
+    {
+      char* end = nullptr;
+      o.mls_radius = std::strtod (argv[++i], &end);
+      if (*end || !std::isfinite (o.mls_radius) || o.mls_radius < 0.0)
+        return error = "--mls needs a finite number >= 0", false;
+    }
     else
       return error = "unknown or incomplete option " + a, false;
   }
@@ -398,6 +411,7 @@ struct ModelView
   std::vector<Eigen::Vector3d> points;
   std::optional<Eigen::Vector3d> viewpoint;
   std::vector<double> area_weights, face_weights; // per face: area or 1 where counted, else 0
+  double prepass_seconds = 0.0;                   // MovingLeastSquares before flowseg (--mls)
 };
 
 /** The views of \a mesh the options ask for: one whole sample (noise, outliers), or one scan per
@@ -442,7 +456,11 @@ modelViews (const pcl_flowseg::TriangleMesh& mesh, const std::vector<double>& ar
     views.push_back (std::move (v));
   }
   for (ModelView& v : views)
+  {
     pcl_flowseg::replaceWithOutliers (v.points, o.outliers, o.seed + 1);
+    if (o.mls_radius > 0.0)
+      v.points = flowseg_bench::movingLeastSquares (v.points, o.mls_radius, &v.prepass_seconds);
+  }
   return views;
 }
 
@@ -492,7 +510,7 @@ scoreViews (const pcl_flowseg::TriangleMesh& mesh, const std::vector<std::vector
     total.score.faces += s.faces / n;
     total.segments += static_cast<double> (distinctLabels (labels, v.face_weights)) / n;
     total.features += m.features / n;
-    total.seconds += m.seconds;
+    total.seconds += m.seconds + v.prepass_seconds;
     if (total.labels.empty ())
     {
       for (std::size_t f = 0; f < labels.size (); ++f)
@@ -901,9 +919,10 @@ main (int argc, char** argv)
   for (double rho : o.rhos)
     std::printf (" %g", rho);
   std::printf (", sampling tolerance %g, stump ratio %g, compact rho %g, compact size %g, smallest part share %g "
-               "(single views %g), significance %g, noise %g, outliers %g",
+               "(single views %g), significance %g, noise %g, outliers %g, MovingLeastSquares radius %g",
                o.flow.merge.sampling_tolerance, o.flow.merge.stump_ratio, o.flow.merge.compact_rho, o.flow.merge.compact_size,
-               o.flow.merge.min_part_share, o.flow.merge.single_view_min_part_share, o.significance, o.noise, o.outliers);
+               o.flow.merge.min_part_share, o.flow.merge.single_view_min_part_share, o.significance, o.noise, o.outliers,
+               o.mls_radius);
   std::printf ("; errors: area-weighted Rand-index error, mean over the model's human segmentations\n\n");
   std::vector<ModelResult> results;
   for (std::size_t i = 0; i < models.size (); ++i)
