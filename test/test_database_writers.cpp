@@ -62,9 +62,9 @@ exitCodeOf (pid_t pid)
   return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
 }
 
-/** Temporary files a writer left beside \a path. */
+/** Temporary files a writer has beside \a path (in /tmp), removed when \a remove. */
 std::size_t
-leftoverTemporaries (const std::string& path)
+temporariesBeside (const std::string& path, bool remove)
 {
   const std::string base = path.substr (path.find_last_of ('/') + 1) + ".tmp.";
   std::size_t found = 0;
@@ -74,11 +74,21 @@ leftoverTemporaries (const std::string& path)
       if (std::string (e->d_name).rfind (base, 0) == 0)
       {
         ++found;
-        std::remove (("/tmp/" + std::string (e->d_name)).c_str ());
+        if (remove)
+          std::remove (("/tmp/" + std::string (e->d_name)).c_str ());
       }
     ::closedir (d);
   }
   return found;
+}
+
+/** Returns once a writer of \a path has a temporary file open (it is inside a write), or after 10 s. */
+void
+waitUntilInsideAWrite (const std::string& path)
+{
+  const auto give_up = std::chrono::steady_clock::now () + std::chrono::seconds (10);
+  while (temporariesBeside (path, false) == 0 && std::chrono::steady_clock::now () < give_up)
+    std::this_thread::yield ();
 }
 
 } // namespace
@@ -154,7 +164,9 @@ TEST (DatabaseWriters, ConcurrentProcessesLoseNoShape)
 TEST (DatabaseWriters, AWriterKilledMidWriteLeavesTheLastCompleteDatabase)
 {
   // A database large enough that writing it takes a while; the writer rewrites it in a loop, each
-  // version one shape larger, until it is killed at some moment of some write.
+  // version one shape larger, and is killed inside a write: once it has written one version (so
+  // that slow builds, e.g. with sanitizers, cannot be killed before they write at all) and a
+  // temporary file shows, at a moment that moves from round to round.
   const std::string path = tempPath ("killed.db");
   removeDatabase (path);
   SignatureDatabase big;
@@ -164,6 +176,8 @@ TEST (DatabaseWriters, AWriterKilledMidWriteLeavesTheLastCompleteDatabase)
   std::size_t killed_mid_write = 0;
   for (int round = 0; round < 8; ++round)
   {
+    int wrote_one[2];
+    ASSERT_EQ (::pipe (wrote_one), 0);
     const pid_t writer = forkRunning ([&] {
       SignatureDatabase db = big;
       for (int version = 0;; ++version)
@@ -171,12 +185,21 @@ TEST (DatabaseWriters, AWriterKilledMidWriteLeavesTheLastCompleteDatabase)
         db.add (entry ("extra " + std::to_string (version)));
         if (!db.save (path))
           return false;
+        const char c = 1;
+        if (version == 0 && ::write (wrote_one[1], &c, 1) != 1)
+          return false;
       }
     });
-    std::this_thread::sleep_for (std::chrono::milliseconds (60 + 37 * round));
+    ::close (wrote_one[1]); // a writer that fails closes the pipe: the read below returns 0
+    char c = 0;
+    const bool wrote = ::read (wrote_one[0], &c, 1) == 1;
+    ::close (wrote_one[0]);
+    if (wrote)
+      waitUntilInsideAWrite (path);
+    std::this_thread::sleep_for (std::chrono::microseconds (300 * round));
     ::kill (writer, SIGKILL);
-    EXPECT_EQ (exitCodeOf (writer), -1) << "the writer ended before it was killed";
-    killed_mid_write += leftoverTemporaries (path) > 0;
+    EXPECT_EQ (exitCodeOf (writer), -1) << "round " << round << ": the writer ended before it was killed";
+    killed_mid_write += temporariesBeside (path, true) > 0;
     SignatureDatabase back;
     const Status loaded = back.load (path);
     ASSERT_TRUE (loaded.ok) << "round " << round << ": " << loaded.message;
