@@ -117,6 +117,15 @@ TEST (ShapeDescription, PartsAndDistributionsOfTheAnimal)
   EXPECT_EQ (again.inner_distance, d.inner_distance);
   ASSERT_EQ (again.parts.size (), d.parts.size ());
   EXPECT_EQ (again.parts.back ().extent, d.parts.back ().extent);
+  // Nor do the worker threads of the inner-distance searches change it (default: all cores).
+  for (unsigned threads : {1u, 2u, 3u})
+  {
+    r.parameters.execution.threads = threads;
+    ShapeDescription with;
+    ASSERT_TRUE (describeShape (r, with).ok);
+    EXPECT_EQ (with.inner_distance, d.inner_distance) << threads;
+    EXPECT_EQ (with.solid_distance, d.solid_distance) << threads;
+  }
 }
 
 namespace {

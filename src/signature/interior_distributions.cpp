@@ -5,6 +5,8 @@
  */
 #include "interior_distributions.h"
 
+#include <pcl_flowseg/common/parallel_jobs.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -209,23 +211,39 @@ spreadSources (const FlowResult& result, const std::vector<int>& drawn, std::vec
     weights[owner[k]] += 1.0 / static_cast<double> (drawn.size ());
 }
 
+/** Row s: the inner distance from source s to each drawn cell, in the order of \a drawn. The
+  * sources' shortest-path searches are independent and run on the result's worker threads. */
+std::vector<std::vector<double>>
+innerDistanceRows (const FlowResult& result, const std::vector<int>& sources, const std::vector<int>& drawn)
+{
+  const InteriorEdges edges (result);
+  std::vector<std::vector<double>> rows (sources.size ());
+  runParallelJobs (sources.size (), result.parameters.execution.threads, [&] (std::size_t s) {
+    std::vector<double> distance (result.vertices.size ());
+    innerDistancesFrom (result, edges, sources[s], distance);
+    rows[s].reserve (drawn.size ());
+    for (int target : drawn)
+      rows[s].push_back (target == sources[s] ? 0.0 : innerDistanceTo (result, distance, target));
+  });
+  return rows;
+}
+
 void
 measureDistances (const FlowResult& result, const std::vector<int>& drawn, double unit, ShapeDescription& description)
 {
-  const InteriorEdges edges (result);
   std::vector<int> sources;
-  std::vector<double> weights, distance (result.vertices.size ()), solid, solid_weight;
+  std::vector<double> weights, solid, solid_weight;
   spreadSources (result, drawn, sources, weights);
+  const std::vector<std::vector<double>> inner_rows = innerDistanceRows (result, sources, drawn);
   for (std::size_t s = 0; s < sources.size (); ++s)
   {
-    innerDistancesFrom (result, edges, sources[s], distance);
     const Eigen::Vector3d& from = result.cells[static_cast<std::size_t> (sources[s])].centroid;
-    for (int target : drawn)
+    for (std::size_t k = 0; k < drawn.size (); ++k)
     {
-      const double straight = (result.cells[static_cast<std::size_t> (target)].centroid - from).norm ();
+      const double straight = (result.cells[static_cast<std::size_t> (drawn[k])].centroid - from).norm ();
       // Where the interior falls apart (a gap in the labelling of a thin neck) the straight
       // distance stands in: dropping the pair would change the distribution far more.
-      double inner = target == sources[s] ? 0.0 : innerDistanceTo (result, distance, target);
+      double inner = inner_rows[s][k];
       if (!std::isfinite (inner))
         inner = straight;
       if (inner > 0.0)
