@@ -163,8 +163,9 @@ constexpr unsigned kMaxThreads = 1024;
 /** \brief Where and how much the run may compute. The result does not depend on it. */
 struct ExecutionParameters
 {
-  /** Worker threads for the triangulation and the per-cell stages: 0 = all hardware threads,
-    * 1 = sequential; at most kMaxThreads. */
+  /** Worker threads for the triangulation, the per-cell stages and the inner-distance searches
+    * of the shape description (signatures): 0 = all hardware threads, 1 = sequential; at most
+    * kMaxThreads. */
   unsigned threads = 0;
   /** Memory the run may use, in bytes; 0 = what the system reports available. Inputs whose
     * estimated need exceeds it are refused before any work. */
