@@ -43,7 +43,7 @@ msSince (Clock::time_point t)
 struct Options
 {
   std::string output;
-  std::string methods = "flowseg,paper,parts,thickness,inner,solid,d2,esf";
+  std::string methods = "flowseg,paper,parts,thickness,inner,solid,inner-profile,thickness-profile,d2,esf";
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
   pcl_flowseg::MatchParameters match;
@@ -63,10 +63,10 @@ makeParser (Options& o)
                   "matches of shape i, black = best), OUTDIR/top5_METHOD.png (the first shape of up to eight\n"
                   "classes and its five best matches; green frame: same class, red: another), and\n"
                   "OUTDIR/scores.json (nearest neighbour, first and second tier, DCG, bull's eye for 2D sets, time).\n\n"
-                  "Methods: flowseg (this module's default: parts, thickness and inner or solid distances combined),\n"
-                  "paper (the paper's weighted points and alignment), its components parts, thickness, inner, solid\n"
-                  "(see flowseg_match --method), d2 (Osada's D2 shape distribution on the same points), esf (PCL's\n"
-                  "Ensemble of Shape Functions).");
+                  "Methods: flowseg (this module's default: its components combined), paper (the paper's\n"
+                  "weighted points and alignment), the components parts, thickness, inner, solid, inner-profile,\n"
+                  "thickness-profile (see flowseg_match --method), d2 (Osada's D2 shape distribution on the same\n"
+                  "points), esf (PCL's Ensemble of Shape Functions).");
   p.text ("-o, --output", "DIR", "output folder (created), required", o.output);
   p.text ("--methods", "LIST", "comma-separated, any of the methods above", o.methods);
   flowseg_app::addMergeOptions (p, o.params.merge);
@@ -98,7 +98,7 @@ parseMethods (Options& o)
     else if (pcl_flowseg::parseMatchMethod (name, method))
       o.signature_methods.push_back (method);
     else
-      return pcl_flowseg::Status::error ("--methods: '" + name + "' is none of flowseg, paper, parts, thickness, inner, solid, d2, esf");
+      return pcl_flowseg::Status::error ("--methods: '" + name + "' is none of flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile, d2, esf");
   }
   o.flowseg = !o.signature_methods.empty ();
   return pcl_flowseg::Status::success ();

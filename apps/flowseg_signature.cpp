@@ -1,6 +1,6 @@
 /*
  * flowseg_signature: prints the signature of a shape (its significant features as weighted points,
- * its described parts and interior distributions).
+ * its described parts, interior distributions and profiles).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "common/flow_options.h"
@@ -21,6 +21,17 @@ std::vector<std::pair<const char*, const pcl_flowseg::Distribution*>>
 distributions (const pcl_flowseg::ShapeDescription& d)
 {
   return {{"thickness", &d.thickness}, {"inner_distance", &d.inner_distance}, {"solid_distance", &d.solid_distance}};
+}
+
+/** A JSON array of \a values. */
+template <typename Values>
+void
+printJsonArray (const Values& values)
+{
+  std::printf ("[");
+  for (std::size_t k = 0; k < values.size (); ++k)
+    std::printf ("%s%s", k ? ", " : "", pcl_flowseg::jsonNumber (values[k]).c_str ());
+  std::printf ("]");
 }
 
 void
@@ -47,13 +58,19 @@ printJson (const std::string& input, const pcl_flowseg::Signature& s)
   const char* separator = "";
   for (const auto& [name, bins] : distributions (d))
   {
-    std::printf ("%s\"%s\": [", separator, name);
+    std::printf ("%s\"%s\": ", separator, name);
     separator = ", ";
-    for (std::size_t k = 0; k < bins->size (); ++k)
-      std::printf ("%s%s", k ? ", " : "", jsonNumber ((*bins)[k]).c_str ());
-    std::printf ("]");
+    printJsonArray (*bins);
   }
-  std::printf ("}}\n");
+  std::printf ("}, \"inner_profiles\": [");
+  for (std::size_t r = 0; r < d.inner_profiles.size (); ++r)
+  {
+    std::printf ("%s", r ? ", " : "");
+    printJsonArray (d.inner_profiles[r]);
+  }
+  std::printf ("], \"thickness_profile\": ");
+  printJsonArray (d.thickness_profile);
+  std::printf ("}\n");
 }
 
 void
@@ -73,6 +90,16 @@ printTable (const std::string& input, const pcl_flowseg::Signature& s)
     for (double v : *bins)
       std::printf (" %.4f", v);
   }
+  std::printf ("\n\ninner-distance profiles (%zu rows, from the centre out):", s.description.inner_profiles.size ());
+  for (const auto& row : s.description.inner_profiles)
+  {
+    std::printf ("\n");
+    for (double v : row)
+      std::printf (" %.4f", v);
+  }
+  std::printf ("\n\nthickness profile (log thickness over the unit, from the centre out):");
+  for (double v : s.description.thickness_profile)
+    std::printf (" %.4f", v);
   std::printf ("\n");
 }
 

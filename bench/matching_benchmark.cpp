@@ -129,7 +129,10 @@ perturbDescription (pcl_flowseg::ShapeDescription& d, std::mt19937& rng)
   for (auto& p : d.parts)
     p.weight /= total;
   std::stable_sort (d.parts.begin (), d.parts.end (), [] (const auto& a, const auto& b) { return a.weight > b.weight; });
-  for (pcl_flowseg::Distribution* h : {&d.thickness, &d.inner_distance, &d.solid_distance})
+  std::vector<pcl_flowseg::Distribution*> distributions{&d.thickness, &d.inner_distance, &d.solid_distance};
+  for (pcl_flowseg::Distribution& row : d.inner_profiles)
+    distributions.push_back (&row);
+  for (pcl_flowseg::Distribution* h : distributions)
   {
     double sum = 0.0;
     for (double& v : *h)
@@ -277,7 +280,7 @@ main (int argc, char** argv)
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_matching [--shapes DIR (../shared/data/tosca_points; class = folder)]\n"
-                            "                              [--method M (flowseg, paper, parts, thickness, inner, solid; default flowseg)]\n");
+                            "                              [--method M (flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile; default flowseg)]\n");
       return 2;
     }
   }

@@ -221,10 +221,10 @@ present=$("$db" list "$work/conc.db" | wc -l)
 [ ! -s "$work/conc.err" ]; check "concurrent adds report no error" $?
 
 # --- damaged databases: every verb refuses them with the line, none changes them ----------------
-printf 'pcl_flowseg signature database 2\nshapes 2\nshape a 3 1 1 0.02 1 0 one\np 0 0 0 1\n' > "$work/truncated.db"
-printf 'pcl_flowseg signature database 2\nshapes 1\nshape a 3 1 1 0.02 1 0 one\np 0 0 1 8888888888888888888888888888888888880.6\n' > "$work/absurd.db"
-printf 'pcl_flowseg signature database 2\nshapes 1\nshape a 3 1 1 0.02 3 0 one\np 0 0 0 1\nshape b 3 1 1 0.02 1 0 two\n' > "$work/counts.db"
-printf 'pcl_flowseg signature database 2\n\x00\x01\xff\xfe garbage \x80\n' > "$work/garbage.db"
+printf 'pcl_flowseg signature database 3\nshapes 2\nshape a 3 1 1 0.02 1 0 one\np 0 0 0 1\n' > "$work/truncated.db"
+printf 'pcl_flowseg signature database 3\nshapes 1\nshape a 3 1 1 0.02 1 0 one\np 0 0 1 8888888888888888888888888888888888880.6\n' > "$work/absurd.db"
+printf 'pcl_flowseg signature database 3\nshapes 1\nshape a 3 1 1 0.02 3 0 one\np 0 0 0 1\nshape b 3 1 1 0.02 1 0 two\n' > "$work/counts.db"
+printf 'pcl_flowseg signature database 3\n\x00\x01\xff\xfe garbage \x80\n' > "$work/garbage.db"
 for bad in truncated absurd counts garbage; do
   cp "$work/$bad.db" "$work/$bad.before"
   expect "db list $bad database" 1 "$bad.db" -- "$db" list "$work/$bad.db"
@@ -243,7 +243,7 @@ if command -v python3 >/dev/null 2>&1; then
   python3 - "$work/eval" <<'PY'
 import csv, json, sys
 d = json.load(open(sys.argv[1] + "/scores.json"))
-for m in ("flowseg", "paper", "parts", "thickness", "inner", "solid", "d2", "esf"):
+for m in ("flowseg", "paper", "parts", "thickness", "inner", "solid", "inner-profile", "thickness-profile", "d2", "esf"):
     s = d["methods"][m]
     assert 0 <= s["first_tier"] <= 1 and s["queries"] == 9, m
     rows = list(csv.reader(open(sys.argv[1] + "/similarity_%s.csv" % m)))
@@ -271,7 +271,9 @@ import json, sys
 d = json.load(sys.stdin)
 assert len(d["parts"]) >= 6 and abs(sum(p["weight"] for p in d["parts"]) - 1) < 1e-9, d["parts"]
 assert sorted(d["distributions"]) == ["inner_distance", "solid_distance", "thickness"]
-assert all(len(v) == 32 and abs(sum(v) - 1) < 1e-9 for v in d["distributions"].values())'
+assert all(len(v) == 32 and abs(sum(v) - 1) < 1e-9 for v in d["distributions"].values())
+assert len(d["inner_profiles"]) == 16 and all(abs(sum(r) - 1) < 1e-9 for r in d["inner_profiles"])
+assert len(d["thickness_profile"]) == 16 and d["thickness_profile"][0] > d["thickness_profile"][-1]'
   check "signature json holds the description" $?
 fi
 expect "signature bad option" 2 "unknown option" -- "$sig" "$src/samples/animal3d.pcd" --frob

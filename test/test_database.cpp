@@ -77,24 +77,32 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
     std::ofstream (p) << text;
     return p;
   };
-  const std::string head = "pcl_flowseg signature database 2\nshapes 1\n";
+  const std::string head = "pcl_flowseg signature database 3\nshapes 1\n";
   const auto bins = [] (const std::string& tag) { // a distribution line: all in the first bin
     std::string line = tag + " 1";
     for (std::size_t k = 1; k < kDistributionBins; ++k)
       line += " 0";
     return line + "\n";
   };
+  std::string profiles, thickness_profile = "h"; // the 16 rows of inner-distance profiles, the thickness profile
+  for (std::size_t r = 0; r < kProfileRows; ++r)
+  {
+    profiles += bins ("r");
+    thickness_profile += " -1";
+  }
+  thickness_profile += "\n";
   struct Case { std::string text, expected; };
   const std::vector<Case> cases = {
       {"hello world\n", "not a pcl_flowseg signature database"},
       {"pcl_flowseg signature database 7\nshapes 0\n", "version"},
-      {"pcl_flowseg signature database 2\nshapes x\n", ":2:"},
+      {"pcl_flowseg signature database 3\nshapes x\n", ":2:"},
       // Version 1 (no descriptions) is refused with what to do, never misread.
       {"pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 1 name\np 0 0 0 1\n", ":1: a version 1 database"},
+      {"pcl_flowseg signature database 2\nshapes 0\n", ":1: a version 2 database (signatures without inner-distance and thickness profiles"},
       // A count the file cannot hold is refused before anything is allocated (fuzzing: 44 million
       // shapes in a 49-byte file asked for 4 GB).
-      {"pcl_flowseg signature database 2\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
-      {"pcl_flowseg signature database 2\nshapes -1\n", ":2:"},
+      {"pcl_flowseg signature database 3\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
+      {"pcl_flowseg signature database 3\nshapes -1\n", ":2:"},
       {head + "shape a 3 1 1 0.02 2 0 name\np 0 0 0 0.5\n", ":5:"},
       {head + "shape a 3 1 1 0.02 1 0 name\np 0 0 nan 0.5\n", ":4:"},
       {head + "shape a 4 1 1 0.02 1 0 name\np 0 0 0 1\n", ":3:"},
@@ -111,10 +119,23 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
       {head + "shape a 3 1 1 0.02 1 17 name\np 0 0 0 1\n", ":3: expected 'shape"},
       {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5\n", ":5: expected 'q"},
       {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\nt 1 0 0\n", ":6: expected 't' and 32 numbers"},
-      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 0.5 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s"),
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 0.5 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles + thickness_profile,
        ":3: shape 'name': the part weights sum"},
-      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s"),
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles + thickness_profile,
        ":3: shape 'name': part 1 has a thickness"},
+      // Version 2 descriptions have no inner-distance profiles: refused at their first missing row.
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s"),
+       ":9: expected 'r' and 32 numbers"},
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") +
+           profiles.substr (0, profiles.size () / kProfileRows * (kProfileRows - 1)) + "r 0.5 0.4" + bins ("").substr (4) +
+           thickness_profile,
+       ":3: shape 'name': the inner-distance profile distribution sums to 0.9"},
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles +
+           "h -1 -1\n",
+       ":25: expected 'h' and 16 numbers"},
+      {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles +
+           "h 7" + thickness_profile.substr (4),
+       ":3: shape 'name': the thickness profile has an entry outside"},
       {head + "shape a 3 1 1 0.02 1 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + "s 0.5 0.5 0.5\n",
        ":8: expected 's'"},
       {"", "not a pcl_flowseg"},

@@ -129,10 +129,10 @@ addMatchMethodOption (OptionParser& p, pcl_flowseg::MatchParameters& match)
   for (pcl_flowseg::MatchMethod m : pcl_flowseg::kMatchMethods)
     choices.emplace_back (pcl_flowseg::matchMethodName (m), m);
   p.choice ("--method", "M",
-            "how shapes are compared: flowseg (parts, thickness and inner or solid\n"
-            "distances combined; the best measured), paper (the paper's weighted points\n"
-            "and alignment; --threshold, --alignment-points and --no-mirror apply to it\n"
-            "only), or one component: parts, thickness, inner, solid",
+            "how shapes are compared: flowseg (the components below combined; the best\n"
+            "measured), paper (the paper's weighted points and alignment; --threshold,\n"
+            "--alignment-points and --no-mirror apply to it only), or one component:\n"
+            "parts, thickness, inner, solid, inner-profile, thickness-profile",
             match.method, choices);
 }
 

@@ -40,7 +40,7 @@ addSignatureOptions (OptionParser& parser, SignatureOptions& options);
 void
 addMatchOptions (OptionParser& parser, pcl_flowseg::MatchParameters& match);
 
-/** \brief --method M (flowseg, paper, parts, thickness, inner, solid). */
+/** \brief --method M (flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile). */
 void
 addMatchMethodOption (OptionParser& parser, pcl_flowseg::MatchParameters& match);
 

@@ -135,8 +135,17 @@ bindSignatureClass (py::module_& m)
             for (const auto& [name, bins] : {std::pair<const char*, const pcl_flowseg::Distribution*> ("thickness", &d.thickness),
                                              {"inner_distance", &d.inner_distance}, {"solid_distance", &d.solid_distance}})
               out[name] = py::array_t<double> (static_cast<py::ssize_t> (bins->size ()), bins->data ());
+            py::array_t<double> profiles ({static_cast<py::ssize_t> (pcl_flowseg::kProfileRows), static_cast<py::ssize_t> (pcl_flowseg::kDistributionBins)});
+            auto rows = profiles.mutable_unchecked<2> ();
+            for (std::size_t r = 0; r < pcl_flowseg::kProfileRows; ++r)
+              for (std::size_t b = 0; b < pcl_flowseg::kDistributionBins; ++b)
+                rows (static_cast<py::ssize_t> (r), static_cast<py::ssize_t> (b)) = d.inner_profiles[r][b];
+            out["inner_profiles"] = profiles;
+            out["thickness_profile"] = py::array_t<double> (static_cast<py::ssize_t> (d.thickness_profile.size ()), d.thickness_profile.data ());
             return out;
-          }, "The interior distributions (thickness, inner_distance, solid_distance), 32 bins each summing to 1.")
+          }, "The interior distributions (thickness, inner_distance, solid_distance), 32 bins each summing to 1, and "
+             "inner_profiles, (16, 32): the inner distances from the most central to the most remote sources, each row summing to 1, "
+             "and thickness_profile, (16,): the mean log thickness over the unit from the most central to the most remote cells.")
       .def_readonly ("unit", &Signature::unit, "The length unit: interior volume^(1/d), input units.")
       .def_readonly ("interior_volume", &Signature::interior_volume)
       .def_readonly ("significance", &Signature::significance)
@@ -176,7 +185,7 @@ bindSignature (py::module_& m)
          "The signature of a shape file (points, meshes sampled with mesh_points and seed, silhouette images), "
          "as flowseg_db computes it. Raises OSError when the file cannot be read or segmented.");
   m.def ("match", &match, py::arg ("a"), py::arg ("b"),
-         "Compares two signatures; keywords method ('flowseg' default, 'paper', 'parts', 'thickness', 'inner', 'solid'), "
+         "Compares two signatures; keywords method ('flowseg' default, 'paper', 'parts', 'thickness', 'inner', 'solid', 'inner-profile', 'thickness-profile'), "
          "and for 'paper' threshold, allow_mirror, alignment_points. match(a, b) equals match(b, a) in similarity.");
 }
 

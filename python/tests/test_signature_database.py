@@ -54,10 +54,13 @@ def test_match_is_symmetric_and_invariant():
     assert fs.match(a, b).similarity == pytest.approx(1.0, abs=1e-9)
     assert a.parts.shape[1] == 6 and len(a.parts) >= 6 and a.parts[:, 0].sum() == pytest.approx(1.0)
     assert a.distributions["inner_distance"].sum() == pytest.approx(1.0)
+    assert a.distributions["inner_profiles"].shape == (16, 32)
+    assert a.distributions["inner_profiles"].sum(axis=1) == pytest.approx([1.0] * 16)
+    assert a.distributions["thickness_profile"].shape == (16,)
     other = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
     assert fs.match(a, other).similarity == pytest.approx(fs.match(other, a).similarity)
     assert fs.match(a, other, method="paper", threshold=0.2, allow_mirror=False, alignment_points=2).alignments > 0
-    for method in ("flowseg", "parts", "thickness", "inner", "solid"):
+    for method in ("flowseg", "parts", "thickness", "inner", "solid", "inner-profile", "thickness-profile"):
         assert fs.match(a, other, method=method).similarity < fs.match(a, b, method=method).similarity, method
     with pytest.raises(ValueError, match="method"):
         fs.match(a, other, method="d2")
@@ -102,7 +105,7 @@ def test_bad_input_raises(tmp_path):
     with pytest.raises(OSError, match="cannot open"):
         fs.Database.open(str(tmp_path / "missing.db"))
     damaged = tmp_path / "damaged.db"
-    damaged.write_text("pcl_flowseg signature database 2\nshapes 1\nshape a 3 1 1 0.02 1 0 one\np 0 0 1 8e300\n")
+    damaged.write_text("pcl_flowseg signature database 3\nshapes 1\nshape a 3 1 1 0.02 1 0 one\np 0 0 1 8e300\n")
     with pytest.raises(OSError, match="damaged.db:4"):
         fs.Database.open(str(damaged))
     with pytest.raises(OSError):

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <iomanip>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace pcl_flowseg {
 
@@ -38,9 +40,10 @@ readDatabaseHeader (std::istream& in, const std::string& path, std::size_t& coun
   int version = 0;
   if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version))
     return lineError (path, 1, "no database version");
-  if (version == 1)
-    return lineError (path, 1, "a version 1 database (signatures without shape descriptions, written by an older "
-                               "pcl_flowseg): rebuild it with flowseg_db build");
+  if (version == 1 || version == 2)
+    return lineError (path, 1, "a version " + std::to_string (version) + " database (signatures without " +
+                                   (version == 1 ? "shape descriptions" : "inner-distance and thickness profiles") +
+                                   ", written by an older pcl_flowseg): rebuild it with flowseg_db build");
   if (version != kDatabaseVersion)
     return lineError (path, 1, "unsupported database version (this build reads version " +
                                    std::to_string (kDatabaseVersion) + ")");
@@ -101,6 +104,21 @@ readDistribution (LineReader& reader, const char* tag, Distribution& bins)
   return Status::success ();
 }
 
+Status
+readThicknessProfile (LineReader& reader, ThicknessProfile& profile)
+{
+  std::string line, word;
+  std::istringstream fields;
+  if (reader.next (line))
+    fields.str (line);
+  bool ok = static_cast<bool> (fields >> word) && word == "h";
+  for (double& v : profile)
+    ok = ok && static_cast<bool> (fields >> v);
+  if (!ok)
+    return reader.error ("expected 'h' and " + std::to_string (kProfileRows) + " numbers");
+  return Status::success ();
+}
+
 } // namespace
 
 Status
@@ -133,6 +151,13 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
                                     {"i", &sig.description.inner_distance}, {"s", &sig.description.solid_distance}})
       if (const Status read = readDistribution (reader, tag, *bins); !read)
         return read;
+  if (parts > 0)
+    for (Distribution& row : sig.description.inner_profiles)
+      if (const Status read = readDistribution (reader, "r", row); !read)
+        return read;
+  if (parts > 0)
+    if (const Status read = readThicknessProfile (reader, sig.description.thickness_profile); !read)
+      return read;
   if (const Status checked = checkSignature (sig); !checked)
     return lineError (reader.path, shape_line, "shape '" + e.name + "': " + checked.message);
   return Status::success ();
@@ -152,14 +177,20 @@ writeShape (std::ostream& out, const ShapeEntry& e)
         << p.offset << "\n";
   if (d.parts.empty ())
     return;
-  for (const auto& [tag, bins] : {std::pair<const char*, const Distribution*> ("t", &d.thickness),
-                                  {"i", &d.inner_distance}, {"s", &d.solid_distance}})
+  std::vector<std::pair<const char*, const Distribution*>> tagged{{"t", &d.thickness}, {"i", &d.inner_distance}, {"s", &d.solid_distance}};
+  for (const Distribution& row : d.inner_profiles)
+    tagged.emplace_back ("r", &row);
+  for (const auto& [tag, bins] : tagged)
   {
     out << tag;
     for (double v : *bins)
       out << " " << v;
     out << "\n";
   }
+  out << "h";
+  for (double v : d.thickness_profile)
+    out << " " << v;
+  out << "\n";
 }
 void
 writeDatabaseHeader (std::ostream& out, std::size_t count)

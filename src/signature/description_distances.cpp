@@ -1,6 +1,6 @@
 /*
- * pcl_flowseg - distances between shape descriptions: parts by earth mover's distance,
- * distributions by L1 or chi-square, and their weighted sum.
+ * pcl_flowseg - distances between shape descriptions: parts and inner-distance profiles by earth
+ * mover's distance, distributions by L1 or chi-square, and their weighted sum.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "description_distances.h"
@@ -34,7 +34,46 @@ chiSquareDistance (const Distribution& a, const Distribution& b)
   return sum;
 }
 
+/** Earth mover's distance between two histograms over the inner-distance range, in units of log
+  * distance: the L1 distance of their cumulative sums times the bin width. */
+double
+transportDistance1d (const Distribution& a, const Distribution& b)
+{
+  double sum = 0.0, below_a = 0.0, below_b = 0.0;
+  for (std::size_t k = 0; k < kDistributionBins; ++k)
+  {
+    below_a += a[k];
+    below_b += b[k];
+    sum += std::abs (below_a - below_b);
+  }
+  return sum * (kInnerLogHigh - kInnerLogLow) / static_cast<double> (kDistributionBins);
+}
+
 } // namespace
+
+double
+innerProfileDistance (const ShapeDescription& a, const ShapeDescription& b)
+{
+  double sum = 0.0;
+  for (std::size_t r = 0; r < kProfileRows; ++r)
+    sum += transportDistance1d (a.inner_profiles[r], b.inner_profiles[r]);
+  return sum / static_cast<double> (kProfileRows);
+}
+
+double
+thicknessProfileDistance (const ShapeDescription& a, const ShapeDescription& b)
+{
+  double mean_a = 0.0, mean_b = 0.0;
+  for (std::size_t r = 0; r < kProfileRows; ++r)
+  {
+    mean_a += a.thickness_profile[r] / static_cast<double> (kProfileRows);
+    mean_b += b.thickness_profile[r] / static_cast<double> (kProfileRows);
+  }
+  double sum = 0.0;
+  for (std::size_t r = 0; r < kProfileRows; ++r)
+    sum += std::abs ((a.thickness_profile[r] - mean_a) - (b.thickness_profile[r] - mean_b));
+  return sum / static_cast<double> (kProfileRows);
+}
 
 Eigen::Matrix<double, 6, 1>
 partPoint (const PartDescription& p)
@@ -90,6 +129,10 @@ descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeD
     sum += w.inner_distance * chiSquareDistance (a.inner_distance, b.inner_distance);
   if (w.solid_distance > 0.0)
     sum += w.solid_distance * l1Distance (a.solid_distance, b.solid_distance);
+  if (w.inner_profile > 0.0)
+    sum += w.inner_profile * innerProfileDistance (a, b);
+  if (w.thickness_profile > 0.0)
+    sum += w.thickness_profile * thicknessProfileDistance (a, b);
   return sum;
 }
 

@@ -22,6 +22,16 @@ partPoint (const PartDescription& part);
 double
 partDistance (const ShapeDescription& a, const ShapeDescription& b);
 
+/** \brief Mean over the rows of the inner-distance profiles of the earth mover's distance between
+  * corresponding rows (in log distance); exactly symmetric. */
+double
+innerProfileDistance (const ShapeDescription& a, const ShapeDescription& b);
+
+/** \brief Mean absolute difference of the thickness profiles' entries, each profile less its mean
+  * (in log thickness); exactly symmetric. */
+double
+thicknessProfileDistance (const ShapeDescription& a, const ShapeDescription& b);
+
 /** \brief The distance of \a method (not MatchMethod::Paper) between two non-empty descriptions of
   * shapes of dimension \a dimension; exactly symmetric. */
 double

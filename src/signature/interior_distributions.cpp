@@ -1,6 +1,6 @@
 /*
- * pcl_flowseg - three distributions measured inside a shape: thickness, inner distances and solid
- * distances between volume-weighted random interior cells.
+ * pcl_flowseg - distributions measured inside a shape: thickness, inner distances (also by the
+ * remoteness of their source) and solid distances between volume-weighted random interior cells.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "interior_distributions.h"
@@ -8,6 +8,7 @@
 #include <pcl_flowseg/common/parallel_jobs.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -228,6 +229,77 @@ innerDistanceRows (const FlowResult& result, const std::vector<int>& sources, co
   return rows;
 }
 
+/** The mean bin of a histogram: orders sources from the most central to the most remote. */
+double
+meanBin (const Distribution& bins)
+{
+  double mean = 0.0, total = 0.0;
+  for (std::size_t b = 0; b < kDistributionBins; ++b)
+  {
+    mean += static_cast<double> (b) * bins[b];
+    total += bins[b];
+  }
+  return total > 0.0 ? mean / total : 0.0;
+}
+
+/** Cuts the sources, ordered by the mean of their histogram \a seen[s], into kProfileRows equal
+  * shares of their weight; each row gets the histograms of its sources in proportion to the
+  * weight they have in its share. */
+void
+fillInnerProfiles (const std::vector<Distribution>& seen, const std::vector<double>& weights, InnerProfiles& profiles)
+{
+  std::vector<std::size_t> order (seen.size ());
+  std::vector<double> mean (seen.size ());
+  for (std::size_t s = 0; s < seen.size (); ++s)
+  {
+    order[s] = s;
+    mean[s] = meanBin (seen[s]);
+  }
+  std::stable_sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) { return mean[a] < mean[b]; });
+  double total = 0.0;
+  for (double w : weights)
+    total += w;
+  const double rows = static_cast<double> (kProfileRows);
+  double start = 0.0;
+  for (std::size_t s : order)
+  {
+    const double end = start + (total > 0.0 ? weights[s] / total : 0.0);
+    for (std::size_t r = 0; r < kProfileRows; ++r)
+    {
+      const double overlap = std::min (end, static_cast<double> (r + 1) / rows) - std::max (start, static_cast<double> (r) / rows);
+      for (std::size_t b = 0; overlap > 0.0 && b < kDistributionBins; ++b)
+        profiles[r][b] += overlap * seen[s][b];
+    }
+    start = end;
+  }
+  for (Distribution& row : profiles)
+    normalise (row);
+}
+
+/** Entry r: the mean log circumradius over \a unit of the drawn cells in the r-th equal share of
+  * them by remoteness (their mean inner distance from the sources, \a remoteness[k]), each clamped
+  * to the thickness range (a nearly flat cell's circumradius can be arbitrarily large). */
+void
+fillThicknessProfile (const FlowResult& result, const std::vector<int>& drawn, const std::vector<double>& remoteness, double unit,
+                      ThicknessProfile& profile)
+{
+  std::vector<std::size_t> order (drawn.size ());
+  for (std::size_t k = 0; k < order.size (); ++k)
+    order[k] = k;
+  std::stable_sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) { return remoteness[a] < remoteness[b]; });
+  std::array<double, kProfileRows> count{};
+  profile.fill (0.0);
+  for (std::size_t i = 0; i < order.size (); ++i)
+  {
+    const std::size_t r = i * kProfileRows / order.size ();
+    const double radius = 0.5 * std::log (result.cells[static_cast<std::size_t> (drawn[order[i]])].squared_radius) - std::log (unit);
+    profile[r] += std::clamp (radius, kThicknessLogLow, kThicknessLogHigh);
+    count[r] += 1.0;
+  }
+  for (std::size_t r = 0; r < kProfileRows; ++r)
+    profile[r] = count[r] > 0.0 ? profile[r] / count[r] : kThicknessLogLow;
+}
+
 void
 measureDistances (const FlowResult& result, const std::vector<int>& drawn, double unit, ShapeDescription& description)
 {
@@ -235,6 +307,8 @@ measureDistances (const FlowResult& result, const std::vector<int>& drawn, doubl
   std::vector<double> weights, solid, solid_weight;
   spreadSources (result, drawn, sources, weights);
   const std::vector<std::vector<double>> inner_rows = innerDistanceRows (result, sources, drawn);
+  std::vector<Distribution> seen (sources.size (), Distribution{});
+  std::vector<double> remoteness (drawn.size (), 0.0);
   for (std::size_t s = 0; s < sources.size (); ++s)
   {
     const Eigen::Vector3d& from = result.cells[static_cast<std::size_t> (sources[s])].centroid;
@@ -246,12 +320,19 @@ measureDistances (const FlowResult& result, const std::vector<int>& drawn, doubl
       double inner = inner_rows[s][k];
       if (!std::isfinite (inner))
         inner = straight;
+      remoteness[k] += weights[s] * inner;
+      // A distance of 0 (the source itself) goes to the first bin of its source's histogram, as
+      // does any below the range; the distribution of all pairs leaves it out.
+      const double log_inner = inner > 0.0 ? std::log (inner / unit) : kInnerLogLow;
+      addToBins (seen[s], log_inner, kInnerLogLow, kInnerLogHigh);
       if (inner > 0.0)
-        addToBins (description.inner_distance, std::log (inner / unit), kInnerLogLow, kInnerLogHigh, weights[s]);
+        addToBins (description.inner_distance, log_inner, kInnerLogLow, kInnerLogHigh, weights[s]);
       solid.push_back (straight);
       solid_weight.push_back (weights[s]);
     }
   }
+  fillInnerProfiles (seen, weights, description.inner_profiles);
+  fillThicknessProfile (result, drawn, remoteness, unit, description.thickness_profile);
   double mean = 0.0, total = 0.0;
   for (std::size_t k = 0; k < solid.size (); ++k)
   {

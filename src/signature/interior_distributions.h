@@ -12,8 +12,8 @@
 
 namespace pcl_flowseg {
 
-/** \brief Fills the three distributions of \a description from kInteriorSamples interior cells
-  * drawn by volume with a fixed seed. */
+/** \brief Fills the distributions of \a description (thickness, inner and solid distances, inner-
+  * distance profiles) from kInteriorSamples interior cells drawn by volume with a fixed seed. */
 void
 describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, ShapeDescription& description);
 

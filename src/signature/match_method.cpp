@@ -13,7 +13,8 @@ namespace {
 /** Each method and its name in files, options and reports. */
 constexpr std::pair<MatchMethod, const char*> kMethodNames[] = {
     {MatchMethod::Combined, "flowseg"}, {MatchMethod::Paper, "paper"},         {MatchMethod::Parts, "parts"},
-    {MatchMethod::Thickness, "thickness"}, {MatchMethod::InnerDistance, "inner"}, {MatchMethod::SolidDistance, "solid"}};
+    {MatchMethod::Thickness, "thickness"}, {MatchMethod::InnerDistance, "inner"}, {MatchMethod::SolidDistance, "solid"},
+    {MatchMethod::InnerProfile, "inner-profile"}, {MatchMethod::ThicknessProfile, "thickness-profile"}};
 
 } // namespace
 
@@ -43,6 +44,12 @@ descriptionWeights (MatchMethod method, int dimension)
     break;
   case MatchMethod::SolidDistance:
     w.solid_distance = 1.0;
+    break;
+  case MatchMethod::InnerProfile:
+    w.inner_profile = 1.0;
+    break;
+  case MatchMethod::ThicknessProfile:
+    w.thickness_profile = 1.0;
     break;
   case MatchMethod::Combined:
   case MatchMethod::Paper:

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace pcl_flowseg {
 
@@ -50,10 +51,16 @@ checkShapeDescription (const ShapeDescription& description)
   const ShapeDescription& d = description;
   if (d.parts.empty ())
   {
-    for (const Distribution* h : {&d.thickness, &d.inner_distance, &d.solid_distance})
+    std::vector<const Distribution*> all{&d.thickness, &d.inner_distance, &d.solid_distance};
+    for (const Distribution& row : d.inner_profiles)
+      all.push_back (&row);
+    for (const Distribution* h : all)
       for (double v : *h)
         if (v != 0.0)
           return Status::error ("a description without parts must have empty distributions");
+    for (double v : d.thickness_profile)
+      if (v != 0.0)
+        return Status::error ("a description without parts must have an empty thickness profile");
     return Status::success ();
   }
   if (d.parts.size () > kMaxParts)
@@ -73,6 +80,13 @@ checkShapeDescription (const ShapeDescription& description)
                                 {&d.inner_distance, "inner-distance"}, {&d.solid_distance, "solid-distance"}})
     if (const Status s = checkDistribution (*h, name); !s)
       return s;
+  for (const Distribution& row : d.inner_profiles)
+    if (const Status s = checkDistribution (row, "inner-distance profile"); !s)
+      return s;
+  for (double v : d.thickness_profile)
+    if (!(v >= kThicknessLogLow && v <= kThicknessLogHigh))
+      return Status::error ("the thickness profile has an entry outside [" + std::to_string (kThicknessLogLow) + ", " +
+                            std::to_string (kThicknessLogHigh) + "]");
   return Status::success ();
 }
 

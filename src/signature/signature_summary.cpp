@@ -36,6 +36,40 @@ signatureSummary (const Signature& signature)
   return out;
 }
 
+namespace {
+
+/** The profiles in 48 numbers: of the inner-distance profiles the mean cumulative sum of each
+  * group of 4 rows at every 4th bin, times the bin width in log distance (so that Euclidean distance
+  * follows the profiles' earth mover's distance), times the method's weight for them; then the
+  * thickness profile less its mean over its rows, times its weight. */
+void
+appendCoarseProfiles (const ShapeDescription& d, const DescriptionWeights& w, std::array<float, kDescriptionSummarySize>& out,
+                      std::size_t& at)
+{
+  const InnerProfiles& profiles = d.inner_profiles;
+  constexpr std::size_t kGroups = 4, kSteps = 8;
+  const double scale = w.inner_profile * (kInnerLogHigh - kInnerLogLow) / static_cast<double> (kDistributionBins);
+  for (std::size_t g = 0; g < kGroups; ++g)
+  {
+    std::array<double, kDistributionBins> cumulative{};
+    for (std::size_t r = g * kProfileRows / kGroups; r < (g + 1) * kProfileRows / kGroups; ++r)
+    {
+      double below = 0.0;
+      for (std::size_t b = 0; b < kDistributionBins; ++b)
+        cumulative[b] += (below += profiles[r][b]) * kGroups / static_cast<double> (kProfileRows);
+    }
+    for (std::size_t k = 0; k < kSteps; ++k)
+      out[at++] = static_cast<float> (scale * cumulative[k * (kDistributionBins / kSteps) + kDistributionBins / kSteps / 2]);
+  }
+  double mean = 0.0;
+  for (double v : d.thickness_profile)
+    mean += v / static_cast<double> (kProfileRows);
+  for (double v : d.thickness_profile)
+    out[at++] = static_cast<float> (w.thickness_profile * (v - mean) / static_cast<double> (kProfileRows));
+}
+
+} // namespace
+
 std::array<float, kDescriptionSummarySize>
 descriptionSummary (const Signature& signature, MatchMethod method)
 {
@@ -61,6 +95,7 @@ descriptionSummary (const Signature& signature, MatchMethod method)
     out[at++] = static_cast<float> (w.parts * mean[k]);
   for (int k = 0; k < 6; ++k)
     out[at++] = static_cast<float> (w.parts * spread[k]);
+  appendCoarseProfiles (d, w, out, at);
   return out;
 }
 

@@ -28,14 +28,22 @@ enum class MatchMethod
   InnerDistance,
   /** L1 distance between the solid-distance distributions. */
   SolidDistance,
+  /** Mean earth mover's distance between corresponding rows of the inner-distance profiles
+    * (ShapeDescription::inner_profiles), in log distance. */
+  InnerProfile,
+  /** Mean difference of the thickness profiles' entries (ShapeDescription::thickness_profile), each
+    * profile less its mean (in log thickness: how thickness changes from the centre out, not how
+    * thick the shape is, which ShapeDescription::thickness tells). */
+  ThicknessProfile,
 };
 
 /** \brief Every method, the default first. */
 constexpr MatchMethod kMatchMethods[] = {MatchMethod::Combined, MatchMethod::Paper, MatchMethod::Parts,
-                                         MatchMethod::Thickness, MatchMethod::InnerDistance, MatchMethod::SolidDistance};
+                                         MatchMethod::Thickness, MatchMethod::InnerDistance, MatchMethod::SolidDistance,
+                                         MatchMethod::InnerProfile, MatchMethod::ThicknessProfile};
 
 /** \brief The method's name in files, options and reports: flowseg, paper, parts, thickness,
-  * inner, solid. */
+  * inner, solid, inner-profile, thickness-profile. */
 const char*
 matchMethodName (MatchMethod method);
 
@@ -50,15 +58,17 @@ struct DescriptionWeights
   double thickness = 0.0;
   double inner_distance = 0.0;
   double solid_distance = 0.0;
+  double inner_profile = 0.0;
+  double thickness_profile = 0.0;
 };
 
 /** \brief The combination for 3D shapes, chosen on shrec07_dev and TOSCA together (the best sum of
   * nearest neighbour and first tier over a grid of weights; docs/method.md). */
-constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 3.0, 1.5};
+constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 3.0, 1.5, 0.0, 2.0};
 
 /** \brief The combination for 2D shapes, chosen on Kimia-216 and Tari-1000 together (the best sum of
   * bull's eye scores over a grid of weights). */
-constexpr DescriptionWeights kCombinedWeights2d{2.0, 0.5, 4.5, 3.0};
+constexpr DescriptionWeights kCombinedWeights2d{3.0, 0.5, 2.0, 3.0, 16.0, 6.0};
 
 /** \brief The weight each description distance has under \a method: kCombinedWeights2d or
   * kCombinedWeights3d (by \a dimension) for Combined, and also for Paper, which compares no

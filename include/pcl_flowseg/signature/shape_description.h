@@ -35,6 +35,9 @@ constexpr double kThicknessLogLow = -5.0, kThicknessLogHigh = 0.0;
 constexpr double kInnerLogLow = -3.0, kInnerLogHigh = 3.0;
 /** \brief Range of the solid-distance distribution: distance over the mean such distance. */
 constexpr double kSolidHigh = 3.0;
+/** \brief Rows of the inner-distance profiles: the sources, ordered from the most central to the
+  * most remote, cut into this many equal shares of their weight. */
+constexpr std::size_t kProfileRows = 16;
 
 /** \brief One interior feature described for part matching. Lengths are in the unit of its
   * signature (interior volume^(1/d)), so they do not change with scale. */
@@ -50,6 +53,17 @@ struct PartDescription
 
 /** \brief A volume-weighted histogram that sums to 1 (values outside the range go to the end bins). */
 using Distribution = std::array<double, kDistributionBins>;
+
+/** \brief Inner distances seen from the centre out to the extremities: row r is the distribution of
+  * the inner distances from the sources in the r-th share of their weight, the sources ordered by
+  * their mean log inner distance. A tip of a limb sees long distances, the middle of a body short
+  * ones, so the rows describe how the shape's parts are arranged, and bending a limb moves little. */
+using InnerProfiles = std::array<Distribution, kProfileRows>;
+
+/** \brief Thickness seen from the centre out to the extremities: entry r is the mean log
+  * circumradius over the unit of the drawn cells in the r-th share of remoteness (their mean inner
+  * distance from the sources): a torso's thickness first, then arms', then fingers'. */
+using ThicknessProfile = std::array<double, kProfileRows>;
 
 /** \brief What describeShape measures; all of it invariant to translation, rotation, mirroring and
   * uniform scale. Empty (no parts, zero distributions) when not computed. */
@@ -67,14 +81,21 @@ struct ShapeDescription
   Distribution inner_distance{};
   /** Straight distances between interior cells over their mean, in [0, kSolidHigh]. */
   Distribution solid_distance{};
+  /** Inner distances by the remoteness of their source (log over the unit, in [kInnerLogLow,
+    * kInnerLogHigh]); the same pairs as inner_distance. */
+  InnerProfiles inner_profiles{};
+  /** Thickness by remoteness: means of log circumradius over the unit, each in [kThicknessLogLow,
+    * kThicknessLogHigh]. */
+  ThicknessProfile thickness_profile{};
 
   bool empty () const { return parts.empty (); }
 };
 
 /** \brief Why \a description is not one describeShape could have made (a message), or success: an
   * empty description, or 1 to kMaxParts parts with weights in (0, 1] ordered by decreasing weight
-  * and summing to 1, lengths finite and > 0 (offset >= 0), ratios in [0, 1], and distributions of
-  * entries in [0, 1] summing to 1. */
+  * and summing to 1, lengths finite and > 0 (offset >= 0), ratios in [0, 1], and distributions
+  * (also each row of the inner-distance profiles) of entries in [0, 1] summing to 1, and a
+  * thickness profile within the thickness range. */
 Status
 checkShapeDescription (const ShapeDescription& description);
 

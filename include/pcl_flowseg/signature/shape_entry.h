@@ -11,8 +11,8 @@
 namespace pcl_flowseg {
 
 /** \brief Version of the signature database file this build reads and writes (2: signatures with
-  * shape descriptions). */
-constexpr int kDatabaseVersion = 2;
+  * shape descriptions; 3: the descriptions with inner-distance and thickness profiles). */
+constexpr int kDatabaseVersion = 3;
 
 /** \brief One stored shape. */
 struct ShapeEntry
