@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <dirent.h>
@@ -51,6 +52,19 @@ parseList (const char* text)
   }
   return v;
 }
+
+/** A whole finite number >= 0 (an MLS radius in sample spacings); false for anything else. */
+bool
+parseRadius (const char* text, double& radius)
+{
+  char* end = nullptr;
+  const double value = std::strtod (text, &end);
+  if (end == text || *end || !std::isfinite (value) || value < 0.0)
+    return false;
+  radius = value;
+  return true;
+}
+
 struct Options
 {
   std::string dir = "../shared/data/meshes";
@@ -84,7 +98,7 @@ parseOptions (int argc, char** argv, Options& o)
       o.preparation.smoothing = m == "off" ? pcl_flowseg::Smoothing::Off : m == "on" ? pcl_flowseg::Smoothing::Always : pcl_flowseg::Smoothing::Automatic;
     }
     else if (a == "--smooth-passes" && i + 1 < argc) o.preparation.smoothing_passes = static_cast<unsigned> (std::atoi (argv[++i]));
-    else if (a == "--mls" && i + 1 < argc && (o.mls_radius = std::atof (argv[i + 1])) >= 0.0) ++i;
+    else if (a == "--mls" && i + 1 < argc && parseRadius (argv[i + 1], o.mls_radius)) ++i;
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_interior [--meshes DIR] [--points 5000,50000] [--noise 0,0.0025,0.005] [--only NAME]\n"
