@@ -34,8 +34,8 @@ constexpr std::size_t kDescriptionSummarySize = 3 * kDistributionBins + 12 + 32 
   * distributions' bins (so that Euclidean distance behaves like the L1 and chi-square distances),
   * then the weighted mean and spread of the parts' attribute points, then the inner-distance
   * profiles coarsened (4 groups of 4 rows, cumulative sums at 8 of the 32 bins) and the thickness
-  * profile, each block scaled by the
-  * method's weight for it (kCombinedWeights3d / 2d; 1 for the single method, 0 for the others).
+  * profile less its mean, each block scaled by the method's weight for it (kCombinedWeights3d /
+  * 2d; 1 for the single method, 0 for the others).
   * Zero for a signature without a description. */
 std::array<float, kDescriptionSummarySize>
 descriptionSummary (const Signature& signature, MatchMethod method);
