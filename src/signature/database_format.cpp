@@ -4,6 +4,7 @@
  */
 #include "database_format.h"
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <iomanip>
@@ -89,33 +90,20 @@ readPart (LineReader& reader, PartDescription& p)
   return Status::success ();
 }
 
+/** A line of \a tag followed by the N numbers of \a values (a distribution's bins, a profile). */
+template <std::size_t N>
 Status
-readDistribution (LineReader& reader, const char* tag, Distribution& bins)
+readTaggedNumbers (LineReader& reader, const char* tag, std::array<double, N>& values)
 {
   std::string line, word;
   std::istringstream fields;
   if (reader.next (line))
     fields.str (line);
   bool ok = static_cast<bool> (fields >> word) && word == tag;
-  for (double& v : bins)
+  for (double& v : values)
     ok = ok && static_cast<bool> (fields >> v);
   if (!ok)
-    return reader.error (std::string ("expected '") + tag + "' and " + std::to_string (kDistributionBins) + " numbers");
-  return Status::success ();
-}
-
-Status
-readThicknessProfile (LineReader& reader, ThicknessProfile& profile)
-{
-  std::string line, word;
-  std::istringstream fields;
-  if (reader.next (line))
-    fields.str (line);
-  bool ok = static_cast<bool> (fields >> word) && word == "h";
-  for (double& v : profile)
-    ok = ok && static_cast<bool> (fields >> v);
-  if (!ok)
-    return reader.error ("expected 'h' and " + std::to_string (kProfileRows) + " numbers");
+    return reader.error (std::string ("expected '") + tag + "' and " + std::to_string (N) + " numbers");
   return Status::success ();
 }
 
@@ -149,14 +137,14 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
   if (parts > 0)
     for (const auto& [tag, bins] : {std::pair<const char*, Distribution*> ("t", &sig.description.thickness),
                                     {"i", &sig.description.inner_distance}, {"s", &sig.description.solid_distance}})
-      if (const Status read = readDistribution (reader, tag, *bins); !read)
+      if (const Status read = readTaggedNumbers (reader, tag, *bins); !read)
         return read;
   if (parts > 0)
     for (Distribution& row : sig.description.inner_profiles)
-      if (const Status read = readDistribution (reader, "r", row); !read)
+      if (const Status read = readTaggedNumbers (reader, "r", row); !read)
         return read;
   if (parts > 0)
-    if (const Status read = readThicknessProfile (reader, sig.description.thickness_profile); !read)
+    if (const Status read = readTaggedNumbers (reader, "h", sig.description.thickness_profile); !read)
       return read;
   if (const Status checked = checkSignature (sig); !checked)
     return lineError (reader.path, shape_line, "shape '" + e.name + "': " + checked.message);
