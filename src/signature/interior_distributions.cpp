@@ -5,15 +5,15 @@
  */
 #include "interior_distributions.h"
 
+#include "interior_graph.h"
+
 #include <pcl_flowseg/common/parallel_jobs.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 
 namespace pcl_flowseg {
@@ -98,70 +98,19 @@ normalise (Distribution& bins)
     v /= total;
 }
 
-/** The edges of the interior cells as a graph on the sample points (compressed rows): paths along
-  * them run through the interior, and unlike paths between cell centroids they do not zigzag
-  * across thin parts. */
-struct InteriorEdges
-{
-  std::vector<std::size_t> first; ///< edges of vertex v: [first[v], first[v + 1])
-  std::vector<int> to;
-  std::vector<double> length;
-
-  explicit InteriorEdges (const FlowResult& result)
-  {
-    std::vector<std::pair<int, int>> pairs;
-    for (const FlowCell& c : result.cells)
-      if (c.inside == 1)
-        for (int a = 0; a <= result.dimension; ++a)
-          for (int b = 0; b <= result.dimension; ++b)
-            if (a != b)
-              pairs.emplace_back (c.vertices[static_cast<std::size_t> (a)], c.vertices[static_cast<std::size_t> (b)]);
-    std::sort (pairs.begin (), pairs.end ());
-    pairs.erase (std::unique (pairs.begin (), pairs.end ()), pairs.end ());
-    first.assign (result.vertices.size () + 1, 0);
-    for (const auto& e : pairs)
-      ++first[static_cast<std::size_t> (e.first) + 1];
-    for (std::size_t v = 0; v < result.vertices.size (); ++v)
-      first[v + 1] += first[v];
-    for (const auto& e : pairs)
-    {
-      to.push_back (e.second);
-      length.push_back ((result.vertices[static_cast<std::size_t> (e.first)] - result.vertices[static_cast<std::size_t> (e.second)]).norm ());
-    }
-  }
-};
-
 /** Inner distances from the centroid of cell \a source: to each sample point by the shortest path
   * through the interior edges (starting at the cell's corners), infinity where they do not reach. */
 void
 innerDistancesFrom (const FlowResult& result, const InteriorEdges& edges, int source, std::vector<double>& distance)
 {
-  using Entry = std::pair<double, int>;
-  std::fill (distance.begin (), distance.end (), std::numeric_limits<double>::infinity ());
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   const FlowCell& cell = result.cells[static_cast<std::size_t> (source)];
+  std::vector<std::pair<int, double>> corners;
   for (int k = 0; k <= result.dimension; ++k)
   {
     const int v = cell.vertices[static_cast<std::size_t> (k)];
-    distance[static_cast<std::size_t> (v)] = (result.vertices[static_cast<std::size_t> (v)] - cell.centroid).norm ();
-    queue.emplace (distance[static_cast<std::size_t> (v)], v);
+    corners.emplace_back (v, (result.vertices[static_cast<std::size_t> (v)] - cell.centroid).norm ());
   }
-  while (!queue.empty ())
-  {
-    const auto [d, v] = queue.top ();
-    queue.pop ();
-    if (d > distance[static_cast<std::size_t> (v)])
-      continue;
-    for (std::size_t e = edges.first[static_cast<std::size_t> (v)]; e < edges.first[static_cast<std::size_t> (v) + 1]; ++e)
-    {
-      const double through = d + edges.length[e];
-      if (through < distance[static_cast<std::size_t> (edges.to[e])])
-      {
-        distance[static_cast<std::size_t> (edges.to[e])] = through;
-        queue.emplace (through, edges.to[e]);
-      }
-    }
-  }
+  shortestPaths (edges, corners, distance);
 }
 
 /** The inner distance to the centroid of cell \a target, through its nearest corner by path. */
