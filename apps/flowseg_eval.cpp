@@ -43,7 +43,7 @@ msSince (Clock::time_point t)
 struct Options
 {
   std::string output;
-  std::string methods = "flowseg,paper,parts,thickness,inner,solid,inner-profile,thickness-profile,d2,esf";
+  std::string methods = "flowseg,paper,parts,thickness,inner,solid,inner-profile,thickness-profile,contour,d2,esf";
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
   pcl_flowseg::MatchParameters match;
@@ -65,8 +65,8 @@ makeParser (Options& o)
                   "OUTDIR/scores.json (nearest neighbour, first and second tier, DCG, bull's eye for 2D sets, time).\n\n"
                   "Methods: flowseg (this module's default: its components combined), paper (the paper's\n"
                   "weighted points and alignment), the components parts, thickness, inner, solid, inner-profile,\n"
-                  "thickness-profile (see flowseg_match --method), d2 (Osada's D2 shape distribution on the same\n"
-                  "points), esf (PCL's Ensemble of Shape Functions).");
+                  "thickness-profile, contour (2D only; see flowseg_match --method), d2 (Osada's D2 shape\n"
+                  "distribution on the same points), esf (PCL's Ensemble of Shape Functions).");
   p.text ("-o, --output", "DIR", "output folder (created), required", o.output);
   p.text ("--methods", "LIST", "comma-separated, any of the methods above", o.methods);
   flowseg_app::addMergeOptions (p, o.params.merge);
@@ -98,7 +98,12 @@ parseMethods (Options& o)
     else if (pcl_flowseg::parseMatchMethod (name, method))
       o.signature_methods.push_back (method);
     else
-      return pcl_flowseg::Status::error ("--methods: '" + name + "' is none of flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile, d2, esf");
+    {
+      std::string names;
+      for (pcl_flowseg::MatchMethod m : pcl_flowseg::kMatchMethods)
+        names += std::string (pcl_flowseg::matchMethodName (m)) + ", ";
+      return pcl_flowseg::Status::error ("--methods: '" + name + "' is none of " + names + "d2, esf");
+    }
   }
   o.flowseg = !o.signature_methods.empty ();
   return pcl_flowseg::Status::success ();
@@ -210,8 +215,14 @@ evaluate (const OptionParser& p, const std::string& root, const Options& o, cons
   const bool planar = o.flowseg && std::all_of (c.dimensions.begin (), c.dimensions.end (), [] (int d) { return d == 2; });
   std::vector<pcl::SignatureMatcher> matchers (o.signature_methods.size ());
   std::vector<std::tuple<std::string, std::size_t, std::function<double (std::size_t, std::size_t)>>> methods;
+  const bool any_planar = std::find (c.dimensions.begin (), c.dimensions.end (), 2) != c.dimensions.end ();
   for (std::size_t m = 0; m < o.signature_methods.size (); ++m)
   {
+    if (o.signature_methods[m] == pcl_flowseg::MatchMethod::Contour && !any_planar)
+    {
+      std::printf ("contour  skipped: it compares the outlines of 2D shapes, and this collection has none\n");
+      continue;
+    }
     matchers[m].setParameters (o.match);
     matchers[m].setMethod (o.signature_methods[m]);
     methods.emplace_back (pcl_flowseg::matchMethodName (o.signature_methods[m]), 0, [&, m] (std::size_t i, std::size_t j) {

@@ -70,7 +70,13 @@ printJson (const std::string& input, const pcl_flowseg::Signature& s)
   }
   std::printf ("], \"thickness_profile\": ");
   printJsonArray (d.thickness_profile);
-  std::printf ("}\n");
+  std::printf (", \"contour\": [");
+  for (std::size_t r = 0; r < d.contour.size (); ++r)
+  {
+    std::printf ("%s", r ? ", " : "");
+    printJsonArray (d.contour[r]);
+  }
+  std::printf ("]}\n");
 }
 
 void
@@ -100,6 +106,14 @@ printTable (const std::string& input, const pcl_flowseg::Signature& s)
   std::printf ("\n\nthickness profile (log thickness over the unit, from the centre out):");
   for (double v : s.description.thickness_profile)
     std::printf (" %.4f", v);
+  std::printf ("\n\ncontour (%zu points along the outline, %zu rings x %zu sectors each):", s.description.contour.size (),
+               pcl_flowseg::kContourDistanceBins, pcl_flowseg::kContourAngleBins);
+  for (const auto& row : s.description.contour)
+  {
+    std::printf ("\n");
+    for (float v : row)
+      std::printf (" %.4f", static_cast<double> (v));
+  }
   std::printf ("\n");
 }
 

@@ -2,7 +2,8 @@
  * flowseg_bench_matching: how fast a signature database answers queries, and what picking
  * candidates by signature summary costs in retrieval quality.
  *
- * 1. Real signatures (the TOSCA point samples, when ../shared is there): leave-one-out retrieval
+ * 1. Real signatures (the TOSCA point samples, when ../shared is there, or the shapes of --shapes DIR,
+ *    2D silhouettes among them): leave-one-out retrieval
  *    (nearest neighbour, first tier) with every stored shape aligned and with the candidate index
  *    at several candidate counts, and the time per query.
  * 2. Databases of 1,000 to 100,000 signatures made from those (or from generated shapes) by random
@@ -19,6 +20,8 @@
 #include <pcl_flowseg/signature/signature.h>
 #include <pcl_flowseg/signature/signature_database.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
+
+#include "signature/contour_matching.h"
 
 #include <Eigen/Geometry>
 
@@ -140,6 +143,17 @@ perturbDescription (pcl_flowseg::ShapeDescription& d, std::mt19937& rng)
     for (double& v : *h)
       v /= sum;
   }
+  // A 2D contour starts elsewhere on the outline, and its bins change likewise.
+  if (!d.contour.empty ())
+    std::rotate (d.contour.begin (), d.contour.begin () + static_cast<std::ptrdiff_t> (rng () % d.contour.size ()), d.contour.end ());
+  for (pcl_flowseg::ContourHistogram& h : d.contour)
+  {
+    double sum = 0.0;
+    for (float& v : h)
+      sum += (v = static_cast<float> (std::max (0.0, v * (1.0 + gauss (rng)))));
+    for (float& v : h)
+      v = static_cast<float> (v / sum);
+  }
 }
 
 /** A copy of \a s turned by a random rotation (mirrored half of the time), its points moved by
@@ -153,9 +167,12 @@ variant (const Signature& s, std::mt19937& rng)
   Eigen::Matrix3d r = q.normalized ().toRotationMatrix ();
   if (s.dimension == 2)
     r = Eigen::AngleAxisd (gauss (rng), Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
-  if (rng () % 2)
+  const bool mirror = rng () % 2;
+  if (mirror)
     r.col (0) *= -1.0;
   Signature v = s;
+  if (mirror)
+    v.description.contour = pcl_flowseg::mirroredContour (v.description.contour);
   double total = 0.0;
   for (auto& p : v.points)
   {
@@ -280,7 +297,7 @@ main (int argc, char** argv)
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_matching [--shapes DIR (../shared/data/tosca_points; class = folder)]\n"
-                            "                              [--method M (flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile; default flowseg)]\n");
+                            "                              [--method M (flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile, contour; default flowseg)]\n");
       return 2;
     }
   }

@@ -200,6 +200,24 @@ TEST (ShapeDescription, InnerProfilesRunFromTheCentreToTheEnds)
   EXPECT_GT (to_bent, 0.9);
 }
 
+TEST (ShapeDescription, ContoursFollowTheOutlineOfTwoDimensionalShapes)
+{
+  // 64 histograms summing to 1 for a 2D shape, none for a 3D one.
+  const Signature hand = signatureOf (flowseg_test::shapeSample ("hand2d", 1500, 1));
+  ASSERT_EQ (hand.description.contour.size (), kContourPoints);
+  for (const ContourHistogram& h : hand.description.contour)
+    EXPECT_NEAR (std::accumulate (h.begin (), h.end (), 0.0), 1.0, 1e-5);
+  EXPECT_TRUE (signatureOf (flowseg_test::shapeSample ("snowman3d", 1500, 1)).description.contour.empty ());
+  // The mirror image, started elsewhere on its outline, is matched; another shape is not.
+  std::vector<V> mirrored;
+  for (const V& p : flowseg_test::shapeSample ("hand2d", 1500, 1))
+    mirrored.emplace_back (-p.x (), p.y (), 0.0);
+  const double to_mirror = matchWith (MatchMethod::Contour, hand, signatureOf (mirrored));
+  const double to_star = matchWith (MatchMethod::Contour, hand, signatureOf (flowseg_test::shapeSample ("star2d", 1500, 1)));
+  EXPECT_GT (to_mirror, 0.95);
+  EXPECT_LT (to_star, to_mirror - 0.1) << "star " << to_star << ", mirror " << to_mirror;
+}
+
 class DescriptionInvariance : public ::testing::TestWithParam<const char*> {};
 
 TEST_P (DescriptionInvariance, ATransformedResampledCopyIsTheMostSimilar)
@@ -251,6 +269,7 @@ TEST_P (DescriptionInvariance, ARescaledCopyIsDescribedExactlyTheSame)
   EXPECT_EQ (a.inner_distance, b.inner_distance);
   EXPECT_EQ (a.solid_distance, b.solid_distance);
   EXPECT_EQ (a.inner_profiles, b.inner_profiles);
+  EXPECT_EQ (a.contour, b.contour);
   for (std::size_t r = 0; r < kProfileRows; ++r) // a log of a ratio: rounding may move it in the last bits
     EXPECT_NEAR (a.thickness_profile[r], b.thickness_profile[r], 1e-12) << r;
 }
@@ -294,13 +313,19 @@ TEST (ShapeDescription, BrokenDescriptionsAreRefused)
   refused ([] (ShapeDescription& d) { d.parts[1].middle_ratio = 1.5; }, "axis ratio");
   refused ([] (ShapeDescription& d) { d.parts[0].thickness = std::nan (""); }, "thickness");
   refused ([] (ShapeDescription& d) { d.inner_distance[3] += 0.1; }, "inner-distance distribution sums");
+  refused ([] (ShapeDescription& d) { d.contour.resize (3); }, "the contour has 3 histograms");
+  refused ([] (ShapeDescription& d) {
+    d.contour.assign (kContourPoints, ContourHistogram{});
+    for (ContourHistogram& h : d.contour)
+      h[7] = 0.5f;
+  }, "a contour histogram sums to 0.5");
   refused ([] (ShapeDescription& d) { d.parts.clear (); }, "without parts");
 }
 
 TEST (ShapeDescription, TheDatabaseKeepsDescriptionsExactlyAndRanksByThem)
 {
   SignatureDatabase db;
-  for (const char* name : {"animal3d", "snowman3d", "dumbbell3d"})
+  for (const char* name : {"animal3d", "snowman3d", "dumbbell3d", "hand2d"})
   {
     ShapeEntry e;
     e.name = name;
@@ -313,7 +338,9 @@ TEST (ShapeDescription, TheDatabaseKeepsDescriptionsExactlyAndRanksByThem)
   SignatureDatabase back;
   ASSERT_TRUE (back.load (path).ok);
   std::remove (path.c_str ());
-  ASSERT_EQ (back.size (), 3u);
+  ASSERT_EQ (back.size (), 4u);
+  EXPECT_EQ (back.entries ()[3].signature.description.contour, db.entries ()[3].signature.description.contour);
+  EXPECT_EQ (back.entries ()[3].signature.description.contour.size (), kContourPoints);
   const ShapeDescription& before = db.entries ()[0].signature.description;
   const ShapeDescription& after = back.entries ()[0].signature.description;
   ASSERT_EQ (after.parts.size (), before.parts.size ());

@@ -142,10 +142,18 @@ bindSignatureClass (py::module_& m)
                 rows (static_cast<py::ssize_t> (r), static_cast<py::ssize_t> (b)) = d.inner_profiles[r][b];
             out["inner_profiles"] = profiles;
             out["thickness_profile"] = py::array_t<double> (static_cast<py::ssize_t> (d.thickness_profile.size ()), d.thickness_profile.data ());
+            py::array_t<float> contour ({static_cast<py::ssize_t> (d.contour.size ()), static_cast<py::ssize_t> (pcl_flowseg::kContourBins)});
+            auto cells = contour.mutable_unchecked<2> ();
+            for (std::size_t r = 0; r < d.contour.size (); ++r)
+              for (std::size_t b = 0; b < pcl_flowseg::kContourBins; ++b)
+                cells (static_cast<py::ssize_t> (r), static_cast<py::ssize_t> (b)) = d.contour[r][b];
+            out["contour"] = contour;
             return out;
           }, "The interior distributions (thickness, inner_distance, solid_distance), 32 bins each summing to 1, and "
              "inner_profiles, (16, 32): the inner distances from the most central to the most remote sources, each row summing to 1, "
-             "and thickness_profile, (16,): the mean log thickness over the unit from the most central to the most remote cells.")
+             "thickness_profile, (16,): the mean log thickness over the unit from the most central to the most remote cells, "
+             "and contour, (64, 60) in 2D and (0, 60) in 3D: the inner-distance shape context at 64 points along the outline "
+             "(5 rings of log inner distance x 12 sectors of direction), each row summing to 1.")
       .def_readonly ("unit", &Signature::unit, "The length unit: interior volume^(1/d), input units.")
       .def_readonly ("interior_volume", &Signature::interior_volume)
       .def_readonly ("significance", &Signature::significance)
@@ -185,7 +193,7 @@ bindSignature (py::module_& m)
          "The signature of a shape file (points, meshes sampled with mesh_points and seed, silhouette images), "
          "as flowseg_db computes it. Raises OSError when the file cannot be read or segmented.");
   m.def ("match", &match, py::arg ("a"), py::arg ("b"),
-         "Compares two signatures; keywords method ('flowseg' default, 'paper', 'parts', 'thickness', 'inner', 'solid', 'inner-profile', 'thickness-profile'), "
+         "Compares two signatures; keywords method ('flowseg' default, 'paper', 'parts', 'thickness', 'inner', 'solid', 'inner-profile', 'thickness-profile', 'contour'), "
          "and for 'paper' threshold, allow_mirror, alignment_points. match(a, b) equals match(b, a) in similarity.");
 }
 

@@ -57,6 +57,7 @@ def test_match_is_symmetric_and_invariant():
     assert a.distributions["inner_profiles"].shape == (16, 32)
     assert a.distributions["inner_profiles"].sum(axis=1) == pytest.approx([1.0] * 16)
     assert a.distributions["thickness_profile"].shape == (16,)
+    assert a.distributions["contour"].shape == (0, 60)  # 3D shapes have no outline
     other = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
     assert fs.match(a, other).similarity == pytest.approx(fs.match(other, a).similarity)
     assert fs.match(a, other, method="paper", threshold=0.2, allow_mirror=False, alignment_points=2).alignments > 0
@@ -64,6 +65,18 @@ def test_match_is_symmetric_and_invariant():
         assert fs.match(a, other, method=method).similarity < fs.match(a, b, method=method).similarity, method
     with pytest.raises(ValueError, match="method"):
         fs.match(a, other, method="d2")
+
+
+def test_contour_of_a_2d_shape_survives_mirroring():
+    points, _ = fs.read_points(os.path.join(SAMPLES, "hand2d.pcd"))
+    a = fs.signature(points)
+    contour = a.distributions["contour"]
+    assert contour.shape == (64, 60) and contour.dtype == np.float32
+    assert contour.sum(axis=1) == pytest.approx([1.0] * 64, abs=1e-4)
+    mirror = np.array([[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    b = fs.signature(0.5 * points @ mirror.T)
+    other = fs.signature(fs.read_points(os.path.join(SAMPLES, "star2d.pcd"))[0])
+    assert fs.match(a, b, method="contour").similarity > fs.match(a, other, method="contour").similarity
 
 
 def test_concurrent_adds_from_threads_lose_nothing(tmp_path):
@@ -105,7 +118,7 @@ def test_bad_input_raises(tmp_path):
     with pytest.raises(OSError, match="cannot open"):
         fs.Database.open(str(tmp_path / "missing.db"))
     damaged = tmp_path / "damaged.db"
-    damaged.write_text("pcl_flowseg signature database 3\nshapes 1\nshape a 3 1 1 0.02 1 0 one\np 0 0 1 8e300\n")
+    damaged.write_text("pcl_flowseg signature database 4\nshapes 1\nshape a 3 1 1 0.02 1 0 0 one\np 0 0 1 8e300\n")
     with pytest.raises(OSError, match="damaged.db:4"):
         fs.Database.open(str(damaged))
     with pytest.raises(OSError):

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -41,16 +42,18 @@ readDatabaseHeader (std::istream& in, const std::string& path, std::size_t& coun
   int version = 0;
   if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version))
     return lineError (path, 1, "no database version");
-  if (version == 1 || version == 2)
+  if (version >= 1 && version <= 3)
     return lineError (path, 1, "a version " + std::to_string (version) + " database (signatures without " +
-                                   (version == 1 ? "shape descriptions" : "inner-distance and thickness profiles") +
+                                   (version == 1   ? "shape descriptions"
+                                    : version == 2 ? "inner-distance and thickness profiles"
+                                                   : "2D contours") +
                                    ", written by an older pcl_flowseg): rebuild it with flowseg_db build");
   if (version != kDatabaseVersion)
     return lineError (path, 1, "unsupported database version (this build reads version " +
                                    std::to_string (kDatabaseVersion) + ")");
   if (!std::getline (in, line) || !(std::istringstream (line) >> word >> count) || word != "shapes")
     return lineError (path, 2, "expected 'shapes N'");
-  // Every shape takes a line of at least 20 bytes ("shape L 3 1 1 0 0 0 N\n"), so a count the rest
+  // Every shape takes a line of at least 20 bytes ("shape L 3 1 1 0 0 0 0 N\n"), so a count the rest
   // of the file cannot hold is refused before anything is allocated for it.
   in.clear (); // a file that ends right after this line has set eof
   const std::streampos here = in.tellg ();
@@ -91,16 +94,16 @@ readPart (LineReader& reader, PartDescription& p)
 }
 
 /** A line of \a tag followed by the N numbers of \a values (a distribution's bins, a profile). */
-template <std::size_t N>
+template <typename Number, std::size_t N>
 Status
-readTaggedNumbers (LineReader& reader, const char* tag, std::array<double, N>& values)
+readTaggedNumbers (LineReader& reader, const char* tag, std::array<Number, N>& values)
 {
   std::string line, word;
   std::istringstream fields;
   if (reader.next (line))
     fields.str (line);
   bool ok = static_cast<bool> (fields >> word) && word == tag;
-  for (double& v : values)
+  for (Number& v : values)
     ok = ok && static_cast<bool> (fields >> v);
   if (!ok)
     return reader.error (std::string ("expected '") + tag + "' and " + std::to_string (N) + " numbers");
@@ -116,12 +119,13 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
   if (!reader.next (line))
     return Status::error (reader.path + ": ends after " + std::to_string (s) + " of " + std::to_string (count) + " shapes");
   std::istringstream head (line);
-  std::size_t points = 0, parts = 0;
+  std::size_t points = 0, parts = 0, contour = 0;
   Signature& sig = e.signature;
-  if (!(head >> word >> e.label >> sig.dimension >> sig.unit >> sig.interior_volume >> sig.significance >> points >> parts) ||
+  if (!(head >> word >> e.label >> sig.dimension >> sig.unit >> sig.interior_volume >> sig.significance >> points >> parts >>
+        contour) ||
       word != "shape" || (sig.dimension != 2 && sig.dimension != 3) || points > 100000 || parts > kMaxParts ||
-      !std::isfinite (sig.unit) || !std::isfinite (sig.interior_volume))
-    return reader.error ("expected 'shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS NAME'");
+      contour > kContourPoints || !std::isfinite (sig.unit) || !std::isfinite (sig.interior_volume))
+    return reader.error ("expected 'shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS CONTOUR NAME'");
   std::getline (head >> std::ws, e.name);
   if (e.name.empty ())
     return reader.error ("shape without a name");
@@ -146,6 +150,10 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
   if (parts > 0)
     if (const Status read = readTaggedNumbers (reader, "h", sig.description.thickness_profile); !read)
       return read;
+  sig.description.contour.resize (contour);
+  for (ContourHistogram& row : sig.description.contour)
+    if (const Status read = readTaggedNumbers (reader, "c", row); !read)
+      return read;
   if (const Status checked = checkSignature (sig); !checked)
     return lineError (reader.path, shape_line, "shape '" + e.name + "': " + checked.message);
   return Status::success ();
@@ -157,7 +165,7 @@ writeShape (std::ostream& out, const ShapeEntry& e)
   const Signature& s = e.signature;
   const ShapeDescription& d = s.description;
   out << "shape " << (e.label.empty () ? "-" : e.label) << " " << s.dimension << " " << s.unit << " " << s.interior_volume << " "
-      << s.significance << " " << s.points.size () << " " << d.parts.size () << " " << e.name << "\n";
+      << s.significance << " " << s.points.size () << " " << d.parts.size () << " " << d.contour.size () << " " << e.name << "\n";
   for (const auto& p : s.points)
     out << "p " << p.position.x () << " " << p.position.y () << " " << p.position.z () << " " << p.weight << "\n";
   for (const auto& p : d.parts)
@@ -179,6 +187,16 @@ writeShape (std::ostream& out, const ShapeEntry& e)
   for (double v : d.thickness_profile)
     out << " " << v;
   out << "\n";
+  // Nine digits read back every float exactly, in half the bytes of the doubles' seventeen.
+  const std::streamsize precision = out.precision (std::numeric_limits<float>::max_digits10);
+  for (const ContourHistogram& row : d.contour)
+  {
+    out << "c";
+    for (float v : row)
+      out << " " << v;
+    out << "\n";
+  }
+  out.precision (precision);
 }
 void
 writeDatabaseHeader (std::ostream& out, std::size_t count)

@@ -6,6 +6,7 @@
 
 #include <pcl_flowseg/common/feature_significance.h>
 
+#include "contour_context.h"
 #include "interior_distributions.h"
 #include "part_description.h"
 
@@ -33,6 +34,7 @@ describeShape (const FlowResult& result, ShapeDescription& description)
   frame.unit = std::pow (frame.volume, 1.0 / result.dimension);
   description.parts = describeParts (result, frame);
   describeInteriorDistributions (result, frame, description);
+  describeContour (result, description);
   return checkShapeDescription (description);
 }
 

@@ -5,6 +5,7 @@
  */
 #include "description_distances.h"
 
+#include "contour_matching.h"
 #include "transport_distance.h"
 
 #include <algorithm>
@@ -133,6 +134,8 @@ descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeD
     sum += w.inner_profile * innerProfileDistance (a, b);
   if (w.thickness_profile > 0.0)
     sum += w.thickness_profile * thicknessProfileDistance (a, b);
+  if (w.contour > 0.0)
+    sum += w.contour * contourDistance (a, b);
   return sum;
 }
 

@@ -14,7 +14,8 @@ namespace {
 constexpr std::pair<MatchMethod, const char*> kMethodNames[] = {
     {MatchMethod::Combined, "flowseg"}, {MatchMethod::Paper, "paper"},         {MatchMethod::Parts, "parts"},
     {MatchMethod::Thickness, "thickness"}, {MatchMethod::InnerDistance, "inner"}, {MatchMethod::SolidDistance, "solid"},
-    {MatchMethod::InnerProfile, "inner-profile"}, {MatchMethod::ThicknessProfile, "thickness-profile"}};
+    {MatchMethod::InnerProfile, "inner-profile"}, {MatchMethod::ThicknessProfile, "thickness-profile"},
+    {MatchMethod::Contour, "contour"}};
 
 } // namespace
 
@@ -50,6 +51,9 @@ descriptionWeights (MatchMethod method, int dimension)
     break;
   case MatchMethod::ThicknessProfile:
     w.thickness_profile = 1.0;
+    break;
+  case MatchMethod::Contour:
+    w.contour = 1.0;
     break;
   case MatchMethod::Combined:
   case MatchMethod::Paper:

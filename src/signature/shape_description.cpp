@@ -43,6 +43,28 @@ checkPart (const PartDescription& p, std::size_t k)
   return Status::success ();
 }
 
+/** Floats summing to 1 only as closely as a stored float (9 digits) keeps them. */
+Status
+checkContour (const std::vector<ContourHistogram>& contour)
+{
+  if (!contour.empty () && contour.size () != kContourPoints)
+    return Status::error ("the contour has " + std::to_string (contour.size ()) + " histograms, not 0 or " +
+                          std::to_string (kContourPoints));
+  for (const ContourHistogram& h : contour)
+  {
+    double sum = 0.0;
+    for (float v : h)
+    {
+      if (!(v >= 0.0f && v <= 1.0f))
+        return Status::error ("a contour histogram has an entry outside [0, 1]");
+      sum += static_cast<double> (v);
+    }
+    if (std::abs (sum - 1.0) > 1e-4)
+      return Status::error ("a contour histogram sums to " + std::to_string (sum) + ", not 1");
+  }
+  return Status::success ();
+}
+
 } // namespace
 
 Status
@@ -61,6 +83,8 @@ checkShapeDescription (const ShapeDescription& description)
     for (double v : d.thickness_profile)
       if (v != 0.0)
         return Status::error ("a description without parts must have an empty thickness profile");
+    if (!d.contour.empty ())
+      return Status::error ("a description without parts must have no contour");
     return Status::success ();
   }
   if (d.parts.size () > kMaxParts)
@@ -87,7 +111,7 @@ checkShapeDescription (const ShapeDescription& description)
     if (!(v >= kThicknessLogLow && v <= kThicknessLogHigh))
       return Status::error ("the thickness profile has an entry outside [" + std::to_string (kThicknessLogLow) + ", " +
                             std::to_string (kThicknessLogHigh) + "]");
-  return Status::success ();
+  return checkContour (d.contour);
 }
 
 } // namespace pcl_flowseg

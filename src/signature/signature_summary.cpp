@@ -68,6 +68,29 @@ appendCoarseProfiles (const ShapeDescription& d, const DescriptionWeights& w, st
     out[at++] = static_cast<float> (w.thickness_profile * (v - mean) / static_cast<double> (kProfileRows));
 }
 
+/** The contour in 30 numbers that neither the start on the outline nor mirroring change: the mean
+  * of its histograms with each sector added to its mirror image's (theta and pi - theta), square
+  * roots (Euclidean distance then behaves like chi-square), times the method's weight. */
+void
+appendContourSummary (const ShapeDescription& d, const DescriptionWeights& w, std::array<float, kDescriptionSummarySize>& out,
+                      std::size_t& at)
+{
+  std::array<double, kContourSummarySize> folded{};
+  for (const ContourHistogram& h : d.contour)
+    for (std::size_t ring = 0; ring < kContourDistanceBins; ++ring)
+      for (std::size_t sector = 0; sector < kContourAngleBins; ++sector)
+      {
+        // Sector pairs {a, 5 - a mod 12}: (0 5) (1 4) (2 3) (6 11) (7 10) (8 9), numbered 0 to 5 by the lower.
+        const std::size_t mirror = (kContourAngleBins / 2 - 1 + kContourAngleBins - sector) % kContourAngleBins;
+        const std::size_t low = std::min (sector, mirror);
+        const std::size_t pair = low < kContourAngleBins / 4 ? low : low - kContourAngleBins / 4;
+        folded[ring * kContourAngleBins / 2 + pair] +=
+            h[ring * kContourAngleBins + sector] / static_cast<double> (d.contour.size ());
+      }
+  for (double v : folded)
+    out[at++] = static_cast<float> (w.contour * std::sqrt (v));
+}
+
 } // namespace
 
 std::array<float, kDescriptionSummarySize>
@@ -96,6 +119,7 @@ descriptionSummary (const Signature& signature, MatchMethod method)
   for (int k = 0; k < 6; ++k)
     out[at++] = static_cast<float> (w.parts * spread[k]);
   appendCoarseProfiles (d, w, out, at);
+  appendContourSummary (d, w, out, at);
   return out;
 }
 

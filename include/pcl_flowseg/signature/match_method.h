@@ -35,15 +35,19 @@ enum class MatchMethod
     * profile less its mean (in log thickness: how thickness changes from the centre out, not how
     * thick the shape is, which ShapeDescription::thickness tells). */
   ThicknessProfile,
+  /** 2D only (0 in 3D): inner-distance shape context along the outline
+    * (ShapeDescription::contour), matched in order by dynamic programming from any start and in
+    * either direction. */
+  Contour,
 };
 
 /** \brief Every method, the default first. */
 constexpr MatchMethod kMatchMethods[] = {MatchMethod::Combined, MatchMethod::Paper, MatchMethod::Parts,
                                          MatchMethod::Thickness, MatchMethod::InnerDistance, MatchMethod::SolidDistance,
-                                         MatchMethod::InnerProfile, MatchMethod::ThicknessProfile};
+                                         MatchMethod::InnerProfile, MatchMethod::ThicknessProfile, MatchMethod::Contour};
 
 /** \brief The method's name in files, options and reports: flowseg, paper, parts, thickness,
-  * inner, solid, inner-profile, thickness-profile. */
+  * inner, solid, inner-profile, thickness-profile, contour. */
 const char*
 matchMethodName (MatchMethod method);
 
@@ -60,15 +64,16 @@ struct DescriptionWeights
   double solid_distance = 0.0;
   double inner_profile = 0.0;
   double thickness_profile = 0.0;
+  double contour = 0.0;
 };
 
 /** \brief The combination for 3D shapes, chosen on shrec07_dev and TOSCA together (the best sum of
   * nearest neighbour and first tier over a grid of weights; docs/method.md). */
-constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 3.0, 1.5, 0.0, 2.0};
+constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 3.0, 1.5, 0.0, 2.0, 0.0};
 
 /** \brief The combination for 2D shapes, chosen on Kimia-216 and Tari-1000 together (the best sum of
   * bull's eye scores over a grid of weights). */
-constexpr DescriptionWeights kCombinedWeights2d{3.0, 0.5, 2.0, 3.0, 16.0, 6.0};
+constexpr DescriptionWeights kCombinedWeights2d{3.0, 0.5, 2.0, 3.0, 8.0, 6.0, 48.0};
 
 /** \brief The weight each description distance has under \a method: kCombinedWeights2d or
   * kCombinedWeights3d (by \a dimension) for Combined, and also for Paper, which compares no

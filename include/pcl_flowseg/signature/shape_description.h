@@ -38,6 +38,13 @@ constexpr double kSolidHigh = 3.0;
 /** \brief Rows of the inner-distance profiles: the sources, ordered from the most central to the
   * most remote, cut into this many equal shares of their weight. */
 constexpr std::size_t kProfileRows = 16;
+/** \brief Points along the outline of a 2D shape at which its inner-distance shape context is
+  * taken (equal steps of arc length). */
+constexpr std::size_t kContourPoints = 64;
+/** \brief Bins of each contour histogram: log inner distance (over the mean, from 1/8 to 2) times
+  * direction from the outline's tangent (30 degree sectors). */
+constexpr std::size_t kContourDistanceBins = 5, kContourAngleBins = 12;
+constexpr std::size_t kContourBins = kContourDistanceBins * kContourAngleBins;
 
 /** \brief One interior feature described for part matching. Lengths are in the unit of its
   * signature (interior volume^(1/d)), so they do not change with scale. */
@@ -65,6 +72,11 @@ using InnerProfiles = std::array<Distribution, kProfileRows>;
   * distance from the sources): a torso's thickness first, then arms', then fingers'. */
 using ThicknessProfile = std::array<double, kProfileRows>;
 
+/** \brief What one point of a 2D outline sees of the rest of it (inner-distance shape context):
+  * the outline's length share by ring of log inner distance and sector of direction, row-major by
+  * ring; sums to 1. Floats: a shape has kContourPoints of them. */
+using ContourHistogram = std::array<float, kContourBins>;
+
 /** \brief What describeShape measures; all of it invariant to translation, rotation, mirroring and
   * uniform scale. Empty (no parts, zero distributions) when not computed. */
 struct ShapeDescription
@@ -87,6 +99,10 @@ struct ShapeDescription
   /** Thickness by remoteness: means of log circumradius over the unit, each in [kThicknessLogLow,
     * kThicknessLogHigh]. */
   ThicknessProfile thickness_profile{};
+  /** 2D only (empty in 3D or without a closed outline): the inner-distance shape context at
+    * kContourPoints points along the outline, counter-clockwise from an arbitrary start. Inner
+    * distances run through the interior, so a bent limb changes them little. */
+  std::vector<ContourHistogram> contour;
 
   bool empty () const { return parts.empty (); }
 };
@@ -95,7 +111,8 @@ struct ShapeDescription
   * empty description, or 1 to kMaxParts parts with weights in (0, 1] ordered by decreasing weight
   * and summing to 1, lengths finite and > 0 (offset >= 0), ratios in [0, 1], and distributions
   * (also each row of the inner-distance profiles) of entries in [0, 1] summing to 1, and a
-  * thickness profile within the thickness range. */
+  * thickness profile within the thickness range; a contour of 0 or kContourPoints histograms, each
+  * of entries in [0, 1] summing to 1. */
 Status
 checkShapeDescription (const ShapeDescription& description);
 

@@ -11,8 +11,9 @@
 namespace pcl_flowseg {
 
 /** \brief Version of the signature database file this build reads and writes (2: signatures with
-  * shape descriptions; 3: the descriptions with inner-distance and thickness profiles). */
-constexpr int kDatabaseVersion = 3;
+  * shape descriptions; 3: the descriptions with inner-distance and thickness profiles; 4: and with
+  * the 2D contour). */
+constexpr int kDatabaseVersion = 4;
 
 /** \brief One stored shape. */
 struct ShapeEntry

@@ -45,17 +45,22 @@ constexpr std::size_t kDefaultCandidates = 1000;
 
 /** \brief Signatures of many shapes, kept in one text file:
   *
-  *     pcl_flowseg signature database 2
+  *     pcl_flowseg signature database 4
   *     shapes N
-  *     shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS NAME...
+  *     shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS CONTOUR NAME...
   *     p X Y Z WEIGHT                                   (POINTS lines)
   *     q WEIGHT THICKNESS EXTENT MIDDLE SMALLEST OFFSET (PARTS lines: ShapeDescription::parts)
   *     t B1 ... B32    i B1 ... B32    s B1 ... B32     (when PARTS > 0: the thickness, inner- and
   *                                                       solid-distance distributions)
+  *     r B1 ... B32                                     (when PARTS > 0: 16 lines, the inner-distance
+  *                                                       profiles)
+  *     h V1 ... V16                                     (when PARTS > 0: the thickness profile)
+  *     c B1 ... B60                                     (CONTOUR lines, 0 or 64: ShapeDescription::contour)
   *
   * Labels contain no white space; names may. Loading checks the header, the version, every count
-  * and number, and reports the line of the first problem. Version 1 files (no descriptions) are
-  * refused with a message that says to rebuild them. */
+  * and number, and reports the line of the first problem. Files of versions 1 to 3 (written by
+  * older builds, without parts of the description) are refused with a message that says to
+  * rebuild them. */
 class SignatureDatabase
 {
 public:

@@ -26,16 +26,19 @@ constexpr std::size_t kSummarySize = 25;
 std::array<float, kSummarySize>
 signatureSummary (const Signature& signature);
 
+/** \brief Numbers of the contour's block in descriptionSummary(). */
+constexpr std::size_t kContourSummarySize = kContourDistanceBins * kContourAngleBins / 2;
 /** \brief Length of descriptionSummary(). */
-constexpr std::size_t kDescriptionSummarySize = 3 * kDistributionBins + 12 + 32 + kProfileRows;
+constexpr std::size_t kDescriptionSummarySize = 3 * kDistributionBins + 12 + 32 + kProfileRows + kContourSummarySize;
 
 /** \brief A vector in which shapes whose descriptions are near under \a method (not
   * MatchMethod::Paper) lie close together (Euclidean distance): the square roots of the three
   * distributions' bins (so that Euclidean distance behaves like the L1 and chi-square distances),
   * then the weighted mean and spread of the parts' attribute points, then the inner-distance
-  * profiles coarsened (4 groups of 4 rows, cumulative sums at 8 of the 32 bins) and the thickness
-  * profile less its mean, each block scaled by the method's weight for it (kCombinedWeights3d /
-  * 2d; 1 for the single method, 0 for the others).
+  * profiles coarsened (4 groups of 4 rows, cumulative sums at 8 of the 32 bins), the thickness
+  * profile less its mean, and the square roots of the contour's mean histogram folded onto its
+  * mirror image (kContourSummarySize), each block scaled by the method's weight for it
+  * (kCombinedWeights3d / 2d; 1 for the single method, 0 for the others).
   * Zero for a signature without a description. */
 std::array<float, kDescriptionSummarySize>
 descriptionSummary (const Signature& signature, MatchMethod method);

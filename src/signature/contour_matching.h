@@ -1,0 +1,25 @@
+/*
+ * pcl_flowseg - matching two 2D contours by dynamic programming (internal header).
+ * SPDX-License-Identifier: GPL-3.0-or-later
+ */
+#pragma once
+
+#include <pcl_flowseg/signature/shape_description.h>
+
+#include <vector>
+
+namespace pcl_flowseg {
+
+/** \brief The contour of the mirror image: the sequence reversed (the outline still runs
+  * counter-clockwise) and each direction theta from the tangent becomes pi - theta. */
+std::vector<ContourHistogram>
+mirroredContour (const std::vector<ContourHistogram>& contour);
+
+/** \brief Dissimilarity of two contour descriptions: the least cost of an order-keeping matching of
+  * the two point sequences (any start on the second, either direction, which is mirroring), each
+  * matched pair costing the Hellinger distance of its histograms, each skipped point a fixed
+  * penalty; over the number of points. 0 when either is empty. */
+double
+contourDistance (const ShapeDescription& a, const ShapeDescription& b);
+
+} // namespace pcl_flowseg
