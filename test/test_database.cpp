@@ -272,6 +272,16 @@ TEST (Database, CandidateIndexAlignsTheNearestSummariesFirst)
     EXPECT_TRUE (all[r].aligned);
     EXPECT_GE (all[r - 1].similarity, all[r].similarity);
   }
+  // The candidates are compared on several threads; one gives the same hits in the same order.
+  db.setQueryThreads (1);
+  const auto one = db.query (query, 0, matcher);
+  ASSERT_EQ (one.size (), all.size ());
+  for (std::size_t r = 0; r < all.size (); ++r)
+  {
+    EXPECT_EQ (one[r].entry, all[r].entry) << r;
+    EXPECT_EQ (one[r].similarity, all[r].similarity) << r;
+  }
+  db.setQueryThreads (0);
   // Replacing a shape by name keeps the count and is seen by the next query (index rebuilt).
   EXPECT_FALSE (db.add (entry ("copy", "target", {WeightedPoint{Eigen::Vector3d (0, 0, 0), 1.0}})));
   EXPECT_EQ (db.size (), 81u);

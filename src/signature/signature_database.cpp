@@ -4,6 +4,7 @@
  */
 #include <pcl_flowseg/signature/signature_database.h>
 
+#include <pcl_flowseg/common/parallel_jobs.h>
 #include <pcl_flowseg/io/atomic_file.h>
 #include <pcl_flowseg/io/file_lock.h>
 
@@ -231,20 +232,17 @@ SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::
     QueryHit hit;
     hit.entry = tree.entry[static_cast<std::size_t> (rows[r])];
     hit.summary_distance = std::sqrt (static_cast<double> (distances[r]));
-    if (r < aligned)
-    {
-      const auto m = matcher.match (signature, entries_[hit.entry].signature);
-      hit.similarity = m.similarity;
-      hit.score = m.score;
-    }
-    else
-    {
-      hit.aligned = false;
-      hit.similarity = hit.score = std::numeric_limits<double>::quiet_NaN ();
-    }
+    hit.aligned = r < aligned;
+    hit.similarity = hit.score = std::numeric_limits<double>::quiet_NaN ();
     hits.push_back (hit);
   }
-  std::stable_sort (hits.begin (), hits.begin () + static_cast<std::ptrdiff_t> (aligned),
+  // The candidates compared in full, side by side: each writes only its own hit.
+  runParallelJobs (std::min (aligned, hits.size ()), query_threads_, [&] (std::size_t r) {
+    const auto m = matcher.match (signature, entries_[hits[r].entry].signature);
+    hits[r].similarity = m.similarity;
+    hits[r].score = m.score;
+  });
+  std::stable_sort (hits.begin (), hits.begin () + static_cast<std::ptrdiff_t> (std::min (aligned, hits.size ())),
                     [] (const QueryHit& a, const QueryHit& b) { return a.similarity > b.similarity; });
   if (k > 0 && hits.size () > k)
     hits.resize (k);

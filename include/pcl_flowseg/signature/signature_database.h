@@ -102,6 +102,12 @@ public:
   void setCandidates (std::size_t count) { candidates_ = count; }
   std::size_t getCandidates () const { return candidates_; }
 
+  /** \brief Threads one query compares its candidates on: 0 (default) = every core, 1 = the
+    * calling thread only (for callers that run many queries side by side). The results are the
+    * same for every count. */
+  void setQueryThreads (unsigned threads) { query_threads_ = threads; }
+  unsigned getQueryThreads () const { return query_threads_; }
+
   /** \brief The \a k most similar stored shapes (all when k = 0) under \a matcher's method. The
     * compared candidates come first, by decreasing similarity; the other shapes follow by
     * increasing summary distance (aligned = false). Shapes of another dimension are skipped. Safe
@@ -124,6 +130,7 @@ private:
   std::vector<ShapeEntry> entries_;
   std::unordered_map<std::string, std::size_t> by_name_;
   std::size_t candidates_ = kDefaultCandidates;
+  unsigned query_threads_ = 0;
   mutable std::map<MatchMethod, std::shared_ptr<const CandidateIndex>> indexes_;
   std::shared_ptr<std::mutex> index_mutex_ = std::make_shared<std::mutex> ();
 };
