@@ -8,7 +8,6 @@
 
 #include <pcl_flowseg/common/parallel_jobs.h>
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -72,9 +72,9 @@ alignedCost (const std::vector<float>& cost, std::size_t n, const std::array<std
   return best;
 }
 
-/** The cost of matching \a a to \a b (root rows, as many as kStarts): the dynamic programme from
-  * the kStarts most promising shifts (by the cost of matching point i to point i + shift), over
-  * the number of points. */
+/** The cost of matching \a a to \a b (root rows, as many in each and at least kStarts): the
+  * dynamic programme from the kStarts most promising shifts (by the cost of matching point i to
+  * point i + shift), over the number of points. */
 double
 bestAlignment (const RootRows& a, const RootRows& b)
 {
@@ -125,7 +125,7 @@ mirroredContour (const std::vector<ContourHistogram>& contour)
 double
 contourDistance (const ShapeDescription& a, const ShapeDescription& b)
 {
-  if (a.contour.empty () || b.contour.empty () || a.contour.size () != b.contour.size ())
+  if (a.contour.size () != kContourPoints || b.contour.size () != kContourPoints)
     return 0.0;
   // Equal contours are at 0 exactly (the matrix product's rounding would leave about 1e-7). Others
   // are solved in one fixed order of the two, so that rounding cannot make the distance from a to

@@ -18,7 +18,8 @@ mirroredContour (const std::vector<ContourHistogram>& contour);
 /** \brief Dissimilarity of two contour descriptions: the least cost of an order-keeping matching of
   * the two point sequences (any start on the second, either direction, which is mirroring), each
   * matched pair costing the Hellinger distance of its histograms, each skipped point a fixed
-  * penalty; over the number of points. 0 when either is empty. */
+  * penalty; over the number of points. 0 unless both have kContourPoints histograms (3D shapes
+  * have none). */
 double
 contourDistance (const ShapeDescription& a, const ShapeDescription& b);
 
