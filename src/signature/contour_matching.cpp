@@ -114,10 +114,7 @@ mirroredContour (const std::vector<ContourHistogram>& contour)
     const ContourHistogram in = h;
     for (std::size_t ring = 0; ring < kContourDistanceBins; ++ring)
       for (std::size_t sector = 0; sector < kContourAngleBins; ++sector)
-      {
-        const std::size_t to = (kContourAngleBins / 2 - 1 + kContourAngleBins - sector) % kContourAngleBins;
-        h[ring * kContourAngleBins + to] = in[ring * kContourAngleBins + sector];
-      }
+        h[ring * kContourAngleBins + mirroredSector (sector)] = in[ring * kContourAngleBins + sector];
   }
   return out;
 }

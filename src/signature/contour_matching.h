@@ -6,9 +6,18 @@
 
 #include <pcl_flowseg/signature/shape_description.h>
 
+#include <cstddef>
 #include <vector>
 
 namespace pcl_flowseg {
+
+/** \brief The sector a direction in \a sector falls into in the mirror image (theta becomes
+  * pi - theta): 0 and 5, 1 and 4, 2 and 3, 6 and 11, 7 and 10, 8 and 9 trade places. */
+constexpr std::size_t
+mirroredSector (std::size_t sector)
+{
+  return (kContourAngleBins / 2 - 1 + kContourAngleBins - sector) % kContourAngleBins;
+}
 
 /** \brief The contour of the mirror image: the sequence reversed (the outline still runs
   * counter-clockwise) and each direction theta from the tangent becomes pi - theta. */

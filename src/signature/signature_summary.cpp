@@ -4,6 +4,7 @@
  */
 #include <pcl_flowseg/signature/signature_summary.h>
 
+#include "contour_matching.h"
 #include "description_distances.h"
 
 #include <Eigen/Eigenvalues>
@@ -80,9 +81,8 @@ appendContourSummary (const ShapeDescription& d, const DescriptionWeights& w, st
     for (std::size_t ring = 0; ring < kContourDistanceBins; ++ring)
       for (std::size_t sector = 0; sector < kContourAngleBins; ++sector)
       {
-        // Sector pairs {a, 5 - a mod 12}: (0 5) (1 4) (2 3) (6 11) (7 10) (8 9), numbered 0 to 5 by the lower.
-        const std::size_t mirror = (kContourAngleBins / 2 - 1 + kContourAngleBins - sector) % kContourAngleBins;
-        const std::size_t low = std::min (sector, mirror);
+        // The pairs of mirrored sectors, numbered 0 to 5 by the lower: (0 5) (1 4) (2 3) (6 11) (7 10) (8 9).
+        const std::size_t low = std::min (sector, mirroredSector (sector));
         const std::size_t pair = low < kContourAngleBins / 4 ? low : low - kContourAngleBins / 4;
         folded[ring * kContourAngleBins / 2 + pair] +=
             h[ring * kContourAngleBins + sector] / static_cast<double> (d.contour.size ());
