@@ -194,6 +194,7 @@ query (const OptionParser& p, const std::vector<std::string>& args, const Option
   pcl::SignatureMatcher matcher;
   matcher.setParameters (o.match);
   db.setCandidates (o.candidates);
+  db.setQueryThreads (o.threads);
   const auto t0 = std::chrono::steady_clock::now ();
   const auto hits = db.query (s, o.k, matcher);
   const double ms = std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
