@@ -171,7 +171,7 @@ histogramOf (const View& view, const std::vector<double>& share, double mean)
 } // namespace
 
 void
-describeContour (const FlowResult& result, ShapeDescription& description)
+describeContour (const FlowResult& result, const InteriorEdges& edges, ShapeDescription& description)
 {
   description.contour.clear ();
   if (result.dimension != 2)
@@ -181,7 +181,6 @@ describeContour (const FlowResult& result, ShapeDescription& description)
     return;
   std::vector<double> share;
   const std::vector<std::size_t> positions = samplePositions (result.vertices, loop, share);
-  const InteriorEdges edges (result);
   std::vector<View> views (kContourPoints);
   runParallelJobs (kContourPoints, result.parameters.execution.threads,
                    [&] (std::size_t s) { views[s] = viewFrom (result, edges, loop, positions[s]); });

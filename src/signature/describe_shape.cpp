@@ -33,8 +33,10 @@ describeShape (const FlowResult& result, ShapeDescription& description)
   frame.centre /= frame.volume;
   frame.unit = std::pow (frame.volume, 1.0 / result.dimension);
   description.parts = describeParts (result, frame);
-  describeInteriorDistributions (result, frame, description);
-  describeContour (result, description);
+  // One graph of the interior's edges for every inner distance measured.
+  const InteriorEdges edges (result);
+  describeInteriorDistributions (result, frame, edges, description);
+  describeContour (result, edges, description);
   return checkShapeDescription (description);
 }
 

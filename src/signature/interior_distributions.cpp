@@ -164,9 +164,8 @@ spreadSources (const FlowResult& result, const std::vector<int>& drawn, std::vec
 /** Row s: the inner distance from source s to each drawn cell, in the order of \a drawn. The
   * sources' shortest-path searches are independent and run on the result's worker threads. */
 std::vector<std::vector<double>>
-innerDistanceRows (const FlowResult& result, const std::vector<int>& sources, const std::vector<int>& drawn)
+innerDistanceRows (const FlowResult& result, const InteriorEdges& edges, const std::vector<int>& sources, const std::vector<int>& drawn)
 {
-  const InteriorEdges edges (result);
   std::vector<std::vector<double>> rows (sources.size ());
   runParallelJobs (sources.size (), result.parameters.execution.threads, [&] (std::size_t s) {
     std::vector<double> distance (result.vertices.size ());
@@ -250,12 +249,13 @@ fillThicknessProfile (const FlowResult& result, const std::vector<int>& drawn, c
 }
 
 void
-measureDistances (const FlowResult& result, const std::vector<int>& drawn, double unit, ShapeDescription& description)
+measureDistances (const FlowResult& result, const InteriorEdges& edges, const std::vector<int>& drawn, double unit,
+                  ShapeDescription& description)
 {
   std::vector<int> sources;
   std::vector<double> weights, solid, solid_weight;
   spreadSources (result, drawn, sources, weights);
-  const std::vector<std::vector<double>> inner_rows = innerDistanceRows (result, sources, drawn);
+  const std::vector<std::vector<double>> inner_rows = innerDistanceRows (result, edges, sources, drawn);
   std::vector<Distribution> seen (sources.size (), Distribution{});
   std::vector<double> remoteness (drawn.size (), 0.0);
   for (std::size_t s = 0; s < sources.size (); ++s)
@@ -296,13 +296,14 @@ measureDistances (const FlowResult& result, const std::vector<int>& drawn, doubl
 } // namespace
 
 void
-describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, ShapeDescription& description)
+describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, const InteriorEdges& edges,
+                               ShapeDescription& description)
 {
   const std::vector<int> drawn = drawInteriorCells (result);
   for (int c : drawn)
     addToBins (description.thickness, 0.5 * std::log (result.cells[static_cast<std::size_t> (c)].squared_radius) - std::log (frame.unit),
                kThicknessLogLow, kThicknessLogHigh);
-  measureDistances (result, drawn, frame.unit, description);
+  measureDistances (result, edges, drawn, frame.unit, description);
   normalise (description.thickness);
   normalise (description.inner_distance);
   normalise (description.solid_distance);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "interior_frame.h"
+#include "interior_graph.h"
 
 #include <pcl_flowseg/common/flow_result.h>
 #include <pcl_flowseg/signature/shape_description.h>
@@ -13,8 +14,10 @@
 namespace pcl_flowseg {
 
 /** \brief Fills the distributions of \a description (thickness, inner and solid distances, inner-
-  * distance profiles) from kInteriorSamples interior cells drawn by volume with a fixed seed. */
+  * distance profiles) from kInteriorSamples interior cells drawn by volume with a fixed seed; inner
+  * distances run along \a edges (the result's). */
 void
-describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, ShapeDescription& description);
+describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, const InteriorEdges& edges,
+                               ShapeDescription& description);
 
 } // namespace pcl_flowseg
