@@ -43,7 +43,7 @@ msSince (Clock::time_point t)
 struct Options
 {
   std::string output;
-  std::string methods = "flowseg,paper,parts,thickness,inner,solid,inner-profile,thickness-profile,contour,d2,esf";
+  std::string methods = "flowseg,paper,parts,thickness,inner,solid,inner-profile,thickness-profile,contour,inner-context,d2,esf";
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
   pcl_flowseg::MatchParameters match;
@@ -65,7 +65,7 @@ makeParser (Options& o)
                   "OUTDIR/scores.json (nearest neighbour, first and second tier, DCG, bull's eye for 2D sets, time).\n\n"
                   "Methods: flowseg (this module's default: its components combined), paper (the paper's\n"
                   "weighted points and alignment), the components parts, thickness, inner, solid, inner-profile,\n"
-                  "thickness-profile, contour (2D only; see flowseg_match --method), d2 (Osada's D2 shape\n"
+                  "thickness-profile, contour (2D only), inner-context (see flowseg_match --method), d2 (Osada's D2 shape\n"
                   "distribution on the same points), esf (PCL's Ensemble of Shape Functions).");
   p.text ("-o, --output", "DIR", "output folder (created), required", o.output);
   p.text ("--methods", "LIST", "comma-separated, any of the methods above", o.methods);

@@ -76,6 +76,13 @@ printJson (const std::string& input, const pcl_flowseg::Signature& s)
     std::printf ("%s", r ? ", " : "");
     printJsonArray (d.contour[r]);
   }
+  std::printf ("], \"inner_contexts\": [");
+  for (std::size_t r = 0; r < d.inner_contexts.size (); ++r)
+  {
+    std::printf ("%s{\"thickness\": %s, \"distances\": ", r ? ", " : "", jsonNumber (d.inner_contexts[r].thickness).c_str ());
+    printJsonArray (d.inner_contexts[r].distances);
+    std::printf ("}");
+  }
   std::printf ("]}\n");
 }
 
@@ -112,6 +119,15 @@ printTable (const std::string& input, const pcl_flowseg::Signature& s)
   {
     std::printf ("\n");
     for (float v : row)
+      std::printf (" %.4f", static_cast<double> (v));
+  }
+  std::printf ("\n\ninner contexts (%zu sources: log thickness over the unit, then %zu bins of log inner distance over "
+               "the mean):",
+               s.description.inner_contexts.size (), pcl_flowseg::kContextBins);
+  for (const auto& context : s.description.inner_contexts)
+  {
+    std::printf ("\n%.4f\t", static_cast<double> (context.thickness));
+    for (float v : context.distances)
       std::printf (" %.4f", static_cast<double> (v));
   }
   std::printf ("\n");

@@ -26,6 +26,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -111,6 +112,18 @@ generatedSignatures (std::size_t count)
   return out;
 }
 
+/** Each entry of a float histogram moved by a factor 1 + \a gauss, then the histogram summed to 1. */
+template <std::size_t N>
+void
+perturbFloats (std::array<float, N>& h, std::normal_distribution<double>& gauss, std::mt19937& rng)
+{
+  double sum = 0.0;
+  for (float& v : h)
+    sum += (v = static_cast<float> (std::max (0.0, v * (1.0 + gauss (rng)))));
+  for (float& v : h)
+    v = static_cast<float> (v / sum);
+}
+
 /** Changes a description as sampling the shape again would: part attributes and weights by up
   * to 10%, each distribution bin by Gaussian noise of 10% of its value (then renormalised). */
 void
@@ -147,12 +160,13 @@ perturbDescription (pcl_flowseg::ShapeDescription& d, std::mt19937& rng)
   if (!d.contour.empty ())
     std::rotate (d.contour.begin (), d.contour.begin () + static_cast<std::ptrdiff_t> (rng () % d.contour.size ()), d.contour.end ());
   for (pcl_flowseg::ContourHistogram& h : d.contour)
+    perturbFloats (h, gauss, rng);
+  // The inner contexts come from other sources, in another order.
+  std::shuffle (d.inner_contexts.begin (), d.inner_contexts.end (), rng);
+  for (pcl_flowseg::InnerContext& c : d.inner_contexts)
   {
-    double sum = 0.0;
-    for (float& v : h)
-      sum += (v = static_cast<float> (std::max (0.0, v * (1.0 + gauss (rng)))));
-    for (float& v : h)
-      v = static_cast<float> (v / sum);
+    perturbFloats (c.distances, gauss, rng);
+    c.thickness = static_cast<float> (std::clamp (c.thickness + gauss (rng), pcl_flowseg::kThicknessLogLow, pcl_flowseg::kThicknessLogHigh));
   }
 }
 

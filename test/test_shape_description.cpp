@@ -5,6 +5,7 @@
  */
 #include "test_support.h"
 
+#include "signature/assignment_cost.h"
 #include "signature/transport_distance.h"
 
 #include <pcl_flowseg/signature/describe_shape.h>
@@ -77,6 +78,35 @@ TEST (TransportDistance, EqualWeightsCostTheBestPermutation)
     const std::vector<double> w (n, 1.0 / n);
     EXPECT_NEAR (transportDistance (w, w, cost), best, 1e-12) << trial;
   }
+}
+
+TEST (AssignmentCost, TheBestOfAllAssignmentsSquareOrNot)
+{
+  std::mt19937 random (5);
+  std::uniform_real_distribution<double> uniform (0.0, 1.0);
+  for (std::size_t rows : {1u, 3u, 6u})
+    for (int trial = 0; trial < 10; ++trial)
+    {
+      const std::size_t columns = 6;
+      std::vector<double> cost (rows * columns);
+      for (double& c : cost)
+        c = uniform (random);
+      // Every assignment of the rows: the first rows entries of every permutation of the columns.
+      std::vector<std::size_t> order (columns);
+      std::iota (order.begin (), order.end (), 0);
+      double best = 1e300;
+      do
+      {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < rows; ++i)
+          sum += cost[i * columns + order[i]];
+        best = std::min (best, sum);
+      } while (std::next_permutation (order.begin (), order.end ()));
+      EXPECT_NEAR (leastAssignmentCost (cost, rows, columns), best, 1e-12) << rows << " " << trial;
+    }
+  EXPECT_EQ (leastAssignmentCost ({}, 0, 4), 0.0);
+  // The greedy first choice (row 0 -> column 0) is wrong.
+  EXPECT_NEAR (leastAssignmentCost ({0.0, 1.0, 0.1, 10.0}, 2, 2), 1.1, 1e-12);
 }
 
 TEST (TransportDistance, SplitsAndUnequalTotals)
@@ -200,6 +230,26 @@ TEST (ShapeDescription, InnerProfilesRunFromTheCentreToTheEnds)
   EXPECT_GT (to_bent, 0.9);
 }
 
+TEST (ShapeDescription, InnerContextsSeeTheShapeFromEachSource)
+{
+  // One context per source, each a histogram summing to 1 with a thickness in range.
+  const Signature animal = signatureOf (flowseg_test::shapeSample ("animal3d", 4000));
+  ASSERT_EQ (animal.description.inner_contexts.size (), kDistanceSources);
+  for (const InnerContext& c : animal.description.inner_contexts)
+  {
+    EXPECT_NEAR (std::accumulate (c.distances.begin (), c.distances.end (), 0.0), 1.0, 1e-5);
+    EXPECT_GE (c.thickness, kThicknessLogLow);
+    EXPECT_LE (c.thickness, kThicknessLogHigh);
+  }
+  // Inner distances over their mean: bending a bar keeps its contexts, a bar of half the length
+  // (thicker over its own mean distance) does not.
+  const Signature bar = signatureOf (barSample (10.0, 0.0));
+  const double to_bent = matchWith (MatchMethod::InnerContext, bar, signatureOf (barSample (10.0, 3.14159265358979)));
+  const double to_shorter = matchWith (MatchMethod::InnerContext, bar, signatureOf (barSample (5.0, 0.0)));
+  EXPECT_GT (to_bent, to_shorter) << "bent " << to_bent << ", shorter " << to_shorter;
+  EXPECT_GT (to_bent, 0.9);
+}
+
 TEST (ShapeDescription, ContoursFollowTheOutlineOfTwoDimensionalShapes)
 {
   // 64 histograms summing to 1 for a 2D shape, none for a 3D one.
@@ -270,6 +320,12 @@ TEST_P (DescriptionInvariance, ARescaledCopyIsDescribedExactlyTheSame)
   EXPECT_EQ (a.solid_distance, b.solid_distance);
   EXPECT_EQ (a.inner_profiles, b.inner_profiles);
   EXPECT_EQ (a.contour, b.contour);
+  ASSERT_EQ (a.inner_contexts.size (), b.inner_contexts.size ());
+  for (std::size_t k = 0; k < a.inner_contexts.size (); ++k)
+  {
+    EXPECT_EQ (a.inner_contexts[k].distances, b.inner_contexts[k].distances) << k;
+    EXPECT_NEAR (a.inner_contexts[k].thickness, b.inner_contexts[k].thickness, 1e-6) << k;
+  }
   for (std::size_t r = 0; r < kProfileRows; ++r) // a log of a ratio: rounding may move it in the last bits
     EXPECT_NEAR (a.thickness_profile[r], b.thickness_profile[r], 1e-12) << r;
 }
@@ -319,6 +375,9 @@ TEST (ShapeDescription, BrokenDescriptionsAreRefused)
     for (ContourHistogram& h : d.contour)
       h[7] = 0.5f;
   }, "a contour histogram sums to 0.5");
+  refused ([] (ShapeDescription& d) { d.inner_contexts.clear (); }, "0 inner contexts");
+  refused ([] (ShapeDescription& d) { d.inner_contexts[5].distances[2] += 0.5f; }, "an inner-context histogram sums to");
+  refused ([] (ShapeDescription& d) { d.inner_contexts[0].thickness = std::nanf (""); }, "inner context's thickness");
   refused ([] (ShapeDescription& d) { d.parts.clear (); }, "without parts");
 }
 
@@ -348,6 +407,12 @@ TEST (ShapeDescription, TheDatabaseKeepsDescriptionsExactlyAndRanksByThem)
   EXPECT_EQ (after.solid_distance, before.solid_distance);
   EXPECT_EQ (after.inner_profiles, before.inner_profiles);
   EXPECT_EQ (after.thickness_profile, before.thickness_profile);
+  ASSERT_EQ (after.inner_contexts.size (), before.inner_contexts.size ());
+  for (std::size_t k = 0; k < after.inner_contexts.size (); ++k)
+  {
+    EXPECT_EQ (after.inner_contexts[k].thickness, before.inner_contexts[k].thickness) << k;
+    EXPECT_EQ (after.inner_contexts[k].distances, before.inner_contexts[k].distances) << k;
+  }
   const Signature query = signatureOf (movedCopy ("animal3d", 3000));
   for (std::size_t candidates : {0u, 1u})
   {

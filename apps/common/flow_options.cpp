@@ -132,7 +132,8 @@ addMatchMethodOption (OptionParser& p, pcl_flowseg::MatchParameters& match)
             "how shapes are compared: flowseg (the components below combined; the best\n"
             "measured), paper (the paper's weighted points and alignment; --threshold,\n"
             "--alignment-points and --no-mirror apply to it only), or one component:\n"
-            "parts, thickness, inner, solid, inner-profile, thickness-profile, contour (2D only)",
+            "parts, thickness, inner, solid, inner-profile, thickness-profile, contour (2D only),\n"
+            "inner-context",
             match.method, choices);
 }
 

@@ -148,12 +148,23 @@ bindSignatureClass (py::module_& m)
               for (std::size_t b = 0; b < pcl_flowseg::kContourBins; ++b)
                 cells (static_cast<py::ssize_t> (r), static_cast<py::ssize_t> (b)) = d.contour[r][b];
             out["contour"] = contour;
+            py::array_t<float> contexts ({static_cast<py::ssize_t> (d.inner_contexts.size ()), static_cast<py::ssize_t> (pcl_flowseg::kContextBins + 1)});
+            auto context_rows = contexts.mutable_unchecked<2> ();
+            for (std::size_t r = 0; r < d.inner_contexts.size (); ++r)
+            {
+              context_rows (static_cast<py::ssize_t> (r), 0) = d.inner_contexts[r].thickness;
+              for (std::size_t b = 0; b < pcl_flowseg::kContextBins; ++b)
+                context_rows (static_cast<py::ssize_t> (r), static_cast<py::ssize_t> (b + 1)) = d.inner_contexts[r].distances[b];
+            }
+            out["inner_contexts"] = contexts;
             return out;
           }, "The interior distributions (thickness, inner_distance, solid_distance), 32 bins each summing to 1, and "
              "inner_profiles, (16, 32): the inner distances from the most central to the most remote sources, each row summing to 1, "
              "thickness_profile, (16,): the mean log thickness over the unit from the most central to the most remote cells, "
              "and contour, (64, 60) in 2D and (0, 60) in 3D: the inner-distance shape context at 64 points along the outline "
-             "(5 rings of log inner distance x 12 sectors of direction), each row summing to 1.")
+             "(5 rings of log inner distance x 12 sectors of direction), each row summing to 1, "
+             "and inner_contexts, (64, 17): per source of inner distances its log thickness over the unit, then its histogram "
+             "of log inner distance over the shape's mean (16 bins summing to 1).")
       .def_readonly ("unit", &Signature::unit, "The length unit: interior volume^(1/d), input units.")
       .def_readonly ("interior_volume", &Signature::interior_volume)
       .def_readonly ("significance", &Signature::significance)

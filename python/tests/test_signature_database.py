@@ -58,10 +58,14 @@ def test_match_is_symmetric_and_invariant():
     assert a.distributions["inner_profiles"].sum(axis=1) == pytest.approx([1.0] * 16)
     assert a.distributions["thickness_profile"].shape == (16,)
     assert a.distributions["contour"].shape == (0, 60)  # 3D shapes have no outline
+    contexts = a.distributions["inner_contexts"]
+    assert contexts.shape == (64, 17) and contexts.dtype == np.float32
+    assert contexts[:, 1:].sum(axis=1) == pytest.approx([1.0] * 64, abs=1e-4)
     other = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
     assert fs.match(a, other).similarity == pytest.approx(fs.match(other, a).similarity)
     assert fs.match(a, other, method="paper", threshold=0.2, allow_mirror=False, alignment_points=2).alignments > 0
-    for method in ("flowseg", "parts", "thickness", "inner", "solid", "inner-profile", "thickness-profile"):
+    for method in ("flowseg", "parts", "thickness", "inner", "solid", "inner-profile", "thickness-profile",
+                   "inner-context"):
         assert fs.match(a, other, method=method).similarity < fs.match(a, b, method=method).similarity, method
     with pytest.raises(ValueError, match="method"):
         fs.match(a, other, method="d2")
@@ -118,7 +122,7 @@ def test_bad_input_raises(tmp_path):
     with pytest.raises(OSError, match="cannot open"):
         fs.Database.open(str(tmp_path / "missing.db"))
     damaged = tmp_path / "damaged.db"
-    damaged.write_text("pcl_flowseg signature database 4\nshapes 1\nshape a 3 1 1 0.02 1 0 0 one\np 0 0 1 8e300\n")
+    damaged.write_text("pcl_flowseg signature database 5\nshapes 1\nshape a 3 1 1 0.02 1 0 0 0 one\np 0 0 1 8e300\n")
     with pytest.raises(OSError, match="damaged.db:4"):
         fs.Database.open(str(damaged))
     with pytest.raises(OSError):

@@ -42,18 +42,19 @@ readDatabaseHeader (std::istream& in, const std::string& path, std::size_t& coun
   int version = 0;
   if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version))
     return lineError (path, 1, "no database version");
-  if (version >= 1 && version <= 3)
+  if (version >= 1 && version <= 4)
     return lineError (path, 1, "a version " + std::to_string (version) + " database (signatures without " +
                                    (version == 1   ? "shape descriptions"
                                     : version == 2 ? "inner-distance and thickness profiles"
-                                                   : "2D contours") +
+                                    : version == 3 ? "2D contours"
+                                                   : "inner-distance contexts") +
                                    ", written by an older pcl_flowseg): rebuild it with flowseg_db build");
   if (version != kDatabaseVersion)
     return lineError (path, 1, "unsupported database version (this build reads version " +
                                    std::to_string (kDatabaseVersion) + ")");
   if (!std::getline (in, line) || !(std::istringstream (line) >> word >> count) || word != "shapes")
     return lineError (path, 2, "expected 'shapes N'");
-  // Every shape takes a line of at least 20 bytes ("shape L 3 1 1 0 0 0 0 N\n"), so a count the rest
+  // Every shape takes a line of at least 20 bytes ("shape L 3 1 1 0 0 0 0 0 N\n"), so a count the rest
   // of the file cannot hold is refused before anything is allocated for it.
   in.clear (); // a file that ends right after this line has set eof
   const std::streampos here = in.tellg ();
@@ -110,6 +111,22 @@ readTaggedNumbers (LineReader& reader, const char* tag, std::array<Number, N>& v
   return Status::success ();
 }
 
+/** An 'x' line: the source's thickness, then its kContextBins histogram entries. */
+Status
+readInnerContext (LineReader& reader, InnerContext& context)
+{
+  std::string line, word;
+  std::istringstream fields;
+  if (reader.next (line))
+    fields.str (line);
+  bool ok = static_cast<bool> (fields >> word >> context.thickness) && word == "x";
+  for (float& v : context.distances)
+    ok = ok && static_cast<bool> (fields >> v);
+  if (!ok)
+    return reader.error ("expected 'x' and " + std::to_string (kContextBins + 1) + " numbers");
+  return Status::success ();
+}
+
 } // namespace
 
 Status
@@ -119,13 +136,13 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
   if (!reader.next (line))
     return Status::error (reader.path + ": ends after " + std::to_string (s) + " of " + std::to_string (count) + " shapes");
   std::istringstream head (line);
-  std::size_t points = 0, parts = 0, contour = 0;
+  std::size_t points = 0, parts = 0, contour = 0, contexts = 0;
   Signature& sig = e.signature;
   if (!(head >> word >> e.label >> sig.dimension >> sig.unit >> sig.interior_volume >> sig.significance >> points >> parts >>
-        contour) ||
+        contour >> contexts) ||
       word != "shape" || (sig.dimension != 2 && sig.dimension != 3) || points > 100000 || parts > kMaxParts ||
-      contour > kContourPoints || !std::isfinite (sig.unit) || !std::isfinite (sig.interior_volume))
-    return reader.error ("expected 'shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS CONTOUR NAME'");
+      contour > kContourPoints || contexts > kDistanceSources || !std::isfinite (sig.unit) || !std::isfinite (sig.interior_volume))
+    return reader.error ("expected 'shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS CONTOUR CONTEXTS NAME'");
   std::getline (head >> std::ws, e.name);
   if (e.name.empty ())
     return reader.error ("shape without a name");
@@ -154,6 +171,10 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
   for (ContourHistogram& row : sig.description.contour)
     if (const Status read = readTaggedNumbers (reader, "c", row); !read)
       return read;
+  sig.description.inner_contexts.resize (contexts);
+  for (InnerContext& context : sig.description.inner_contexts)
+    if (const Status read = readInnerContext (reader, context); !read)
+      return read;
   if (const Status checked = checkSignature (sig); !checked)
     return lineError (reader.path, shape_line, "shape '" + e.name + "': " + checked.message);
   return Status::success ();
@@ -165,7 +186,8 @@ writeShape (std::ostream& out, const ShapeEntry& e)
   const Signature& s = e.signature;
   const ShapeDescription& d = s.description;
   out << "shape " << (e.label.empty () ? "-" : e.label) << " " << s.dimension << " " << s.unit << " " << s.interior_volume << " "
-      << s.significance << " " << s.points.size () << " " << d.parts.size () << " " << d.contour.size () << " " << e.name << "\n";
+      << s.significance << " " << s.points.size () << " " << d.parts.size () << " " << d.contour.size () << " "
+      << d.inner_contexts.size () << " " << e.name << "\n";
   for (const auto& p : s.points)
     out << "p " << p.position.x () << " " << p.position.y () << " " << p.position.z () << " " << p.weight << "\n";
   for (const auto& p : d.parts)
@@ -193,6 +215,13 @@ writeShape (std::ostream& out, const ShapeEntry& e)
   {
     out << "c";
     for (float v : row)
+      out << " " << v;
+    out << "\n";
+  }
+  for (const InnerContext& context : d.inner_contexts)
+  {
+    out << "x " << context.thickness;
+    for (float v : context.distances)
       out << " " << v;
     out << "\n";
   }

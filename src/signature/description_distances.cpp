@@ -1,16 +1,20 @@
 /*
  * pcl_flowseg - distances between shape descriptions: parts and inner-distance profiles by earth
- * mover's distance, distributions by L1 or chi-square, and their weighted sum.
+ * mover's distance, inner contexts by least-cost assignment, distributions by L1 or chi-square,
+ * and their weighted sum.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "description_distances.h"
 
+#include "assignment_cost.h"
 #include "contour_matching.h"
 #include "transport_distance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <tuple>
+#include <vector>
 
 namespace pcl_flowseg {
 
@@ -117,6 +121,58 @@ partDistance (const ShapeDescription& first, const ShapeDescription& second)
   return transportDistance (wa, wb, cost);
 }
 
+namespace {
+
+/** Cumulative sums of each context's histogram: the earth mover's distance between two is then
+  * the L1 distance of their rows times the bin width. */
+std::vector<std::array<double, kContextBins>>
+cumulativeContexts (const std::vector<InnerContext>& contexts)
+{
+  std::vector<std::array<double, kContextBins>> rows (contexts.size ());
+  for (std::size_t i = 0; i < contexts.size (); ++i)
+  {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < kContextBins; ++k)
+      rows[i][k] = sum += static_cast<double> (contexts[i].distances[k]);
+  }
+  return rows;
+}
+
+bool
+contextLess (const InnerContext& a, const InnerContext& b)
+{
+  return std::tie (a.thickness, a.distances) < std::tie (b.thickness, b.distances);
+}
+
+} // namespace
+
+double
+innerContextDistance (const ShapeDescription& first, const ShapeDescription& second)
+{
+  // Solved in one fixed order of the two (the fewer contexts as rows), so that rounding cannot
+  // make the distance from a to b differ from b to a.
+  const std::vector<InnerContext>& x = first.inner_contexts;
+  const std::vector<InnerContext>& y = second.inner_contexts;
+  const bool swap = y.size () != x.size () ? y.size () < x.size ()
+                                           : std::lexicographical_compare (y.begin (), y.end (), x.begin (), x.end (), contextLess);
+  const std::vector<InnerContext>& rows = swap ? y : x;
+  const std::vector<InnerContext>& columns = swap ? x : y;
+  if (rows.empty ())
+    return 0.0;
+  const auto row_sums = cumulativeContexts (rows), column_sums = cumulativeContexts (columns);
+  const double bin_width = (kContextLogHigh - kContextLogLow) / static_cast<double> (kContextBins);
+  std::vector<double> cost (rows.size () * columns.size ());
+  for (std::size_t i = 0; i < rows.size (); ++i)
+    for (std::size_t j = 0; j < columns.size (); ++j)
+    {
+      double moved = 0.0;
+      for (std::size_t k = 0; k < kContextBins; ++k)
+        moved += std::abs (row_sums[i][k] - column_sums[j][k]);
+      cost[i * columns.size () + j] = moved * bin_width + kContextThicknessWeight * std::abs (static_cast<double> (rows[i].thickness) - static_cast<double> (columns[j].thickness));
+    }
+  return leastAssignmentCost (cost, rows.size (), columns.size ()) / static_cast<double> (rows.size ());
+}
+
 double
 descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeDescription& b, int dimension)
 {
@@ -136,6 +192,8 @@ descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeD
     sum += w.thickness_profile * thicknessProfileDistance (a, b);
   if (w.contour > 0.0)
     sum += w.contour * contourDistance (a, b);
+  if (w.inner_context > 0.0)
+    sum += w.inner_context * innerContextDistance (a, b);
   return sum;
 }
 

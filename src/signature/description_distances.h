@@ -32,6 +32,13 @@ innerProfileDistance (const ShapeDescription& a, const ShapeDescription& b);
 double
 thicknessProfileDistance (const ShapeDescription& a, const ShapeDescription& b);
 
+/** \brief Mean cost of the least-cost one-to-one assignment of the inner contexts of \a a to those
+  * of \b b (the fewer to the more); a pair costs the earth mover's distance of their histograms (in
+  * log distance) plus kContextThicknessWeight times the difference of their log thickness. Exactly
+  * symmetric; 0 when either has none. */
+double
+innerContextDistance (const ShapeDescription& a, const ShapeDescription& b);
+
 /** \brief The distance of \a method (not MatchMethod::Paper) between two non-empty descriptions of
   * shapes of dimension \a dimension; exactly symmetric. */
 double

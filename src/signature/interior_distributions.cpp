@@ -1,6 +1,7 @@
 /*
  * pcl_flowseg - distributions measured inside a shape: thickness, inner distances (also by the
- * remoteness of their source) and solid distances between volume-weighted random interior cells.
+ * remoteness of their source, and as each source's own context) and solid distances between
+ * volume-weighted random interior cells.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "interior_distributions.h"
@@ -248,6 +249,33 @@ fillThicknessProfile (const FlowResult& result, const std::vector<int>& drawn, c
     profile[r] = count[r] > 0.0 ? profile[r] / count[r] : kThicknessLogLow;
 }
 
+/** One inner context per source (InnerContext): its cells' share by log inner distance over the
+  * weighted mean of all inner distances in \a rows (finite), and its own log thickness. */
+void
+fillInnerContexts (const FlowResult& result, const std::vector<int>& sources, const std::vector<double>& weights,
+                   const std::vector<std::vector<double>>& rows, double unit, std::vector<InnerContext>& contexts)
+{
+  double mean = 0.0;
+  for (std::size_t s = 0; s < rows.size (); ++s)
+    for (double d : rows[s])
+      mean += weights[s] * d / static_cast<double> (rows[s].size ());
+  contexts.assign (sources.size (), InnerContext{});
+  for (std::size_t s = 0; s < sources.size (); ++s)
+  {
+    InnerContext& context = contexts[s];
+    const double share = 1.0 / static_cast<double> (rows[s].size ());
+    for (double d : rows[s])
+    {
+      const double at = d > 0.0 && mean > 0.0 ? std::log (d / mean) : kContextLogLow;
+      const double bin = (at - kContextLogLow) / (kContextLogHigh - kContextLogLow) * static_cast<double> (kContextBins);
+      const double clamped = std::isnan (bin) ? 0.0 : std::clamp (bin, 0.0, static_cast<double> (kContextBins - 1));
+      context.distances[static_cast<std::size_t> (clamped)] += static_cast<float> (share);
+    }
+    const double radius = 0.5 * std::log (result.cells[static_cast<std::size_t> (sources[s])].squared_radius) - std::log (unit);
+    context.thickness = static_cast<float> (std::clamp (radius, kThicknessLogLow, kThicknessLogHigh));
+  }
+}
+
 void
 measureDistances (const FlowResult& result, const InteriorEdges& edges, const std::vector<int>& drawn, double unit,
                   ShapeDescription& description)
@@ -255,7 +283,7 @@ measureDistances (const FlowResult& result, const InteriorEdges& edges, const st
   std::vector<int> sources;
   std::vector<double> weights, solid, solid_weight;
   spreadSources (result, drawn, sources, weights);
-  const std::vector<std::vector<double>> inner_rows = innerDistanceRows (result, edges, sources, drawn);
+  std::vector<std::vector<double>> inner_rows = innerDistanceRows (result, edges, sources, drawn);
   std::vector<Distribution> seen (sources.size (), Distribution{});
   std::vector<double> remoteness (drawn.size (), 0.0);
   for (std::size_t s = 0; s < sources.size (); ++s)
@@ -266,7 +294,7 @@ measureDistances (const FlowResult& result, const InteriorEdges& edges, const st
       const double straight = (result.cells[static_cast<std::size_t> (drawn[k])].centroid - from).norm ();
       // Where the interior falls apart (a gap in the labelling of a thin neck) the straight
       // distance stands in: dropping the pair would change the distribution far more.
-      double inner = inner_rows[s][k];
+      double& inner = inner_rows[s][k];
       if (!std::isfinite (inner))
         inner = straight;
       remoteness[k] += weights[s] * inner;
@@ -281,6 +309,7 @@ measureDistances (const FlowResult& result, const InteriorEdges& edges, const st
     }
   }
   fillInnerProfiles (seen, weights, description.inner_profiles);
+  fillInnerContexts (result, sources, weights, inner_rows, unit, description.inner_contexts);
   fillThicknessProfile (result, drawn, remoteness, unit, description.thickness_profile);
   double mean = 0.0, total = 0.0;
   for (std::size_t k = 0; k < solid.size (); ++k)

@@ -15,7 +15,7 @@ constexpr std::pair<MatchMethod, const char*> kMethodNames[] = {
     {MatchMethod::Combined, "flowseg"}, {MatchMethod::Paper, "paper"},         {MatchMethod::Parts, "parts"},
     {MatchMethod::Thickness, "thickness"}, {MatchMethod::InnerDistance, "inner"}, {MatchMethod::SolidDistance, "solid"},
     {MatchMethod::InnerProfile, "inner-profile"}, {MatchMethod::ThicknessProfile, "thickness-profile"},
-    {MatchMethod::Contour, "contour"}};
+    {MatchMethod::Contour, "contour"}, {MatchMethod::InnerContext, "inner-context"}};
 
 } // namespace
 
@@ -54,6 +54,9 @@ descriptionWeights (MatchMethod method, int dimension)
     break;
   case MatchMethod::Contour:
     w.contour = 1.0;
+    break;
+  case MatchMethod::InnerContext:
+    w.inner_context = 1.0;
     break;
   case MatchMethod::Combined:
   case MatchMethod::Paper:

@@ -4,6 +4,7 @@
  */
 #include <pcl_flowseg/signature/shape_description.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -44,6 +45,22 @@ checkPart (const PartDescription& p, std::size_t k)
 }
 
 /** Floats summing to 1 only as closely as a stored float (9 digits) keeps them. */
+template <std::size_t N>
+Status
+checkFloatHistogram (const std::array<float, N>& h, const std::string& what)
+{
+  double sum = 0.0;
+  for (float v : h)
+  {
+    if (!(v >= 0.0f && v <= 1.0f))
+      return Status::error (what + " has an entry outside [0, 1]");
+    sum += static_cast<double> (v);
+  }
+  if (std::abs (sum - 1.0) > 1e-4)
+    return Status::error (what + " sums to " + std::to_string (sum) + ", not 1");
+  return Status::success ();
+}
+
 Status
 checkContour (const std::vector<ContourHistogram>& contour)
 {
@@ -51,16 +68,23 @@ checkContour (const std::vector<ContourHistogram>& contour)
     return Status::error ("the contour has " + std::to_string (contour.size ()) + " histograms, not 0 or " +
                           std::to_string (kContourPoints));
   for (const ContourHistogram& h : contour)
+    if (const Status s = checkFloatHistogram (h, "a contour histogram"); !s)
+      return s;
+  return Status::success ();
+}
+
+Status
+checkInnerContexts (const std::vector<InnerContext>& contexts)
+{
+  if (contexts.empty () || contexts.size () > kDistanceSources)
+    return Status::error ("the description has " + std::to_string (contexts.size ()) + " inner contexts, not 1 to " +
+                          std::to_string (kDistanceSources));
+  for (const InnerContext& c : contexts)
   {
-    double sum = 0.0;
-    for (float v : h)
-    {
-      if (!(v >= 0.0f && v <= 1.0f))
-        return Status::error ("a contour histogram has an entry outside [0, 1]");
-      sum += static_cast<double> (v);
-    }
-    if (std::abs (sum - 1.0) > 1e-4)
-      return Status::error ("a contour histogram sums to " + std::to_string (sum) + ", not 1");
+    if (!(c.thickness >= kThicknessLogLow && c.thickness <= kThicknessLogHigh))
+      return Status::error ("an inner context's thickness is outside the thickness range");
+    if (const Status s = checkFloatHistogram (c.distances, "an inner-context histogram"); !s)
+      return s;
   }
   return Status::success ();
 }
@@ -83,8 +107,8 @@ checkShapeDescription (const ShapeDescription& description)
     for (double v : d.thickness_profile)
       if (v != 0.0)
         return Status::error ("a description without parts must have an empty thickness profile");
-    if (!d.contour.empty ())
-      return Status::error ("a description without parts must have no contour");
+    if (!d.contour.empty () || !d.inner_contexts.empty ())
+      return Status::error ("a description without parts must have no contour and no inner contexts");
     return Status::success ();
   }
   if (d.parts.size () > kMaxParts)
@@ -111,7 +135,9 @@ checkShapeDescription (const ShapeDescription& description)
     if (!(v >= kThicknessLogLow && v <= kThicknessLogHigh))
       return Status::error ("the thickness profile has an entry outside [" + std::to_string (kThicknessLogLow) + ", " +
                             std::to_string (kThicknessLogHigh) + "]");
-  return checkContour (d.contour);
+  if (const Status s = checkContour (d.contour); !s)
+    return s;
+  return checkInnerContexts (d.inner_contexts);
 }
 
 } // namespace pcl_flowseg

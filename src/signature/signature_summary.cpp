@@ -91,6 +91,29 @@ appendContourSummary (const ShapeDescription& d, const DescriptionWeights& w, st
     out[at++] = static_cast<float> (w.contour * std::sqrt (v));
 }
 
+/** The inner contexts in kContextSummarySize numbers: their mean cumulative histogram times the bin
+  * width (the assignment's earth mover's distances are at least the distance of these means) and
+  * their mean thickness times kContextThicknessWeight, times the method's weight. */
+void
+appendContextSummary (const ShapeDescription& d, const DescriptionWeights& w, std::array<float, kDescriptionSummarySize>& out,
+                      std::size_t& at)
+{
+  std::array<double, kContextBins> cumulative{};
+  double thickness = 0.0;
+  const double share = d.inner_contexts.empty () ? 0.0 : 1.0 / static_cast<double> (d.inner_contexts.size ());
+  for (const InnerContext& c : d.inner_contexts)
+  {
+    double below = 0.0;
+    for (std::size_t k = 0; k < kContextBins; ++k)
+      cumulative[k] += share * (below += static_cast<double> (c.distances[k]));
+    thickness += share * static_cast<double> (c.thickness);
+  }
+  const double bin_width = (kContextLogHigh - kContextLogLow) / static_cast<double> (kContextBins);
+  for (double v : cumulative)
+    out[at++] = static_cast<float> (w.inner_context * bin_width * v);
+  out[at++] = static_cast<float> (w.inner_context * kContextThicknessWeight * thickness);
+}
+
 } // namespace
 
 std::array<float, kDescriptionSummarySize>
@@ -120,6 +143,7 @@ descriptionSummary (const Signature& signature, MatchMethod method)
     out[at++] = static_cast<float> (w.parts * spread[k]);
   appendCoarseProfiles (d, w, out, at);
   appendContourSummary (d, w, out, at);
+  appendContextSummary (d, w, out, at);
   return out;
 }
 

@@ -39,15 +39,19 @@ enum class MatchMethod
     * (ShapeDescription::contour), matched in order by dynamic programming from any start and in
     * either direction. */
   Contour,
+  /** Least-cost assignment between the inner-distance contexts of the sources
+    * (ShapeDescription::inner_contexts): each source of one shape matched to one of the other's. */
+  InnerContext,
 };
 
 /** \brief Every method, the default first. */
 constexpr MatchMethod kMatchMethods[] = {MatchMethod::Combined, MatchMethod::Paper, MatchMethod::Parts,
                                          MatchMethod::Thickness, MatchMethod::InnerDistance, MatchMethod::SolidDistance,
-                                         MatchMethod::InnerProfile, MatchMethod::ThicknessProfile, MatchMethod::Contour};
+                                         MatchMethod::InnerProfile, MatchMethod::ThicknessProfile, MatchMethod::Contour,
+                                         MatchMethod::InnerContext};
 
 /** \brief The method's name in files, options and reports: flowseg, paper, parts, thickness,
-  * inner, solid, inner-profile, thickness-profile, contour. */
+  * inner, solid, inner-profile, thickness-profile, contour, inner-context. */
 const char*
 matchMethodName (MatchMethod method);
 
@@ -65,15 +69,16 @@ struct DescriptionWeights
   double inner_profile = 0.0;
   double thickness_profile = 0.0;
   double contour = 0.0;
+  double inner_context = 0.0;
 };
 
 /** \brief The combination for 3D shapes, chosen on shrec07_dev and TOSCA together (the best sum of
   * nearest neighbour and first tier over a grid of weights; docs/method.md). */
-constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 3.0, 1.5, 0.0, 2.0, 0.0};
+constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 0.0, 0.0, 0.0, 4.0, 0.0, 4.0};
 
 /** \brief The combination for 2D shapes, chosen on Kimia-216 and Tari-1000 together (the best sum of
   * bull's eye scores over a grid of weights). */
-constexpr DescriptionWeights kCombinedWeights2d{3.0, 0.5, 2.0, 3.0, 8.0, 6.0, 48.0};
+constexpr DescriptionWeights kCombinedWeights2d{3.0, 0.5, 2.0, 3.0, 8.0, 6.0, 48.0, 8.0};
 
 /** \brief The weight each description distance has under \a method: kCombinedWeights2d or
   * kCombinedWeights3d (by \a dimension) for Combined, and also for Paper, which compares no
@@ -96,5 +101,9 @@ struct PartAttributeWeights
 
 /** \brief The part attribute weights MatchMethod::Parts uses. */
 constexpr PartAttributeWeights kPartAttributeWeights{};
+
+/** \brief Weight of the difference of two sources' log thickness in the cost of matching their inner
+  * contexts (the earth mover's distance of their histograms counts 1). */
+constexpr double kContextThicknessWeight = 0.5;
 
 } // namespace pcl_flowseg

@@ -45,6 +45,10 @@ constexpr std::size_t kContourPoints = 64;
   * direction from the outline's tangent (30 degree sectors). */
 constexpr std::size_t kContourDistanceBins = 5, kContourAngleBins = 12;
 constexpr std::size_t kContourBins = kContourDistanceBins * kContourAngleBins;
+/** \brief Bins of each inner-distance context: log of the inner distance over the shape's mean
+  * inner distance, in [kContextLogLow, kContextLogHigh]. */
+constexpr std::size_t kContextBins = 16;
+constexpr double kContextLogLow = -3.0, kContextLogHigh = 1.5;
 
 /** \brief One interior feature described for part matching. Lengths are in the unit of its
   * signature (interior volume^(1/d)), so they do not change with scale. */
@@ -77,6 +81,16 @@ using ThicknessProfile = std::array<double, kProfileRows>;
   * ring; sums to 1. Floats: a shape has kContourPoints of them. */
 using ContourHistogram = std::array<float, kContourBins>;
 
+/** \brief What one source of inner distances sees of the shape (an inner-distance context): the
+  * share of the drawn interior cells by log inner distance from it over the shape's mean inner
+  * distance (kContextBins bins, summing to 1), and how thick the shape is at the source. Floats: a
+  * shape has up to kDistanceSources of them. */
+struct InnerContext
+{
+  float thickness = 0.0f;                          ///< log circumradius of the source cell over the unit
+  std::array<float, kContextBins> distances{};     ///< inner-distance histogram, sums to 1
+};
+
 /** \brief What describeShape measures; all of it invariant to translation, rotation, mirroring and
   * uniform scale. Empty (no parts, zero distributions) when not computed. */
 struct ShapeDescription
@@ -103,6 +117,10 @@ struct ShapeDescription
     * kContourPoints points along the outline, counter-clockwise from an arbitrary start. Inner
     * distances run through the interior, so a bent limb changes them little. */
   std::vector<ContourHistogram> contour;
+  /** The inner-distance context of each source (kDistanceSources, fewer on a shape of fewer
+    * interior cells), in the sources' farthest-point order. Compared as a set: each source of one
+    * shape is matched to one of the other's at least total cost. */
+  std::vector<InnerContext> inner_contexts;
 
   bool empty () const { return parts.empty (); }
 };
@@ -112,7 +130,8 @@ struct ShapeDescription
   * and summing to 1, lengths finite and > 0 (offset >= 0), ratios in [0, 1], and distributions
   * (also each row of the inner-distance profiles) of entries in [0, 1] summing to 1, and a
   * thickness profile within the thickness range; a contour of 0 or kContourPoints histograms, each
-  * of entries in [0, 1] summing to 1. */
+  * of entries in [0, 1] summing to 1; 1 to kDistanceSources inner contexts with histograms likewise
+  * and thicknesses within the thickness range (none without parts). */
 Status
 checkShapeDescription (const ShapeDescription& description);
 

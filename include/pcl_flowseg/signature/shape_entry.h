@@ -12,8 +12,8 @@ namespace pcl_flowseg {
 
 /** \brief Version of the signature database file this build reads and writes (2: signatures with
   * shape descriptions; 3: the descriptions with inner-distance and thickness profiles; 4: and with
-  * the 2D contour). */
-constexpr int kDatabaseVersion = 4;
+  * the 2D contour; 5: and with the inner-distance contexts). */
+constexpr int kDatabaseVersion = 5;
 
 /** \brief One stored shape. */
 struct ShapeEntry

@@ -28,8 +28,11 @@ signatureSummary (const Signature& signature);
 
 /** \brief Numbers of the contour's block in descriptionSummary(). */
 constexpr std::size_t kContourSummarySize = kContourDistanceBins * kContourAngleBins / 2;
+/** \brief Numbers of the inner contexts' block in descriptionSummary(). */
+constexpr std::size_t kContextSummarySize = kContextBins + 1;
 /** \brief Length of descriptionSummary(). */
-constexpr std::size_t kDescriptionSummarySize = 3 * kDistributionBins + 12 + 32 + kProfileRows + kContourSummarySize;
+constexpr std::size_t kDescriptionSummarySize =
+    3 * kDistributionBins + 12 + 32 + kProfileRows + kContourSummarySize + kContextSummarySize;
 
 /** \brief A vector in which shapes whose descriptions are near under \a method (not
   * MatchMethod::Paper) lie close together (Euclidean distance): the square roots of the three
@@ -37,7 +40,8 @@ constexpr std::size_t kDescriptionSummarySize = 3 * kDistributionBins + 12 + 32 
   * then the weighted mean and spread of the parts' attribute points, then the inner-distance
   * profiles coarsened (4 groups of 4 rows, cumulative sums at 8 of the 32 bins), the thickness
   * profile less its mean, and the square roots of the contour's mean histogram folded onto its
-  * mirror image (kContourSummarySize), each block scaled by the method's weight for it
+  * mirror image (kContourSummarySize), the inner contexts' mean cumulative histogram (times the bin
+  * width) and mean thickness (times kContextThicknessWeight) (kContextSummarySize), each block scaled by the method's weight for it
   * (kCombinedWeights3d / 2d; 1 for the single method, 0 for the others).
   * Zero for a signature without a description. */
 std::array<float, kDescriptionSummarySize>
