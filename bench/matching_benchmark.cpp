@@ -311,7 +311,7 @@ main (int argc, char** argv)
     else
     {
       std::fprintf (stderr, "usage: flowseg_bench_matching [--shapes DIR (../shared/data/tosca_points; class = folder)]\n"
-                            "                              [--method M (flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile, contour; default flowseg)]\n");
+                            "                              [--method M (flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile, contour, inner-context; default flowseg)]\n");
       return 2;
     }
   }

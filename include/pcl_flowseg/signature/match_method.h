@@ -78,7 +78,7 @@ constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 0.0, 0.0, 0.0, 4.0, 0
 
 /** \brief The combination for 2D shapes, chosen on Kimia-216 and Tari-1000 together (the best sum of
   * bull's eye scores over a grid of weights). */
-constexpr DescriptionWeights kCombinedWeights2d{3.0, 0.5, 2.0, 3.0, 8.0, 6.0, 48.0, 8.0};
+constexpr DescriptionWeights kCombinedWeights2d{3.0, 0.5, 2.0, 3.0, 8.0, 6.0, 48.0, 0.0};
 
 /** \brief The weight each description distance has under \a method: kCombinedWeights2d or
   * kCombinedWeights3d (by \a dimension) for Combined, and also for Paper, which compares no
