@@ -179,7 +179,9 @@ describeShapes (const std::string& root, const Options& o, Collection& c)
       [&] (std::size_t done, std::size_t) { progress.update (done); });
 }
 
-/** Compares every pair by \a similarity, scores the ranking and writes the method's figures. */
+/** Compares every pair by \a similarity, scores the ranking and writes the method's figures. Every
+  * method compares a to b exactly as b to a (the paper's aligns both ways and keeps the better;
+  * the others are tested to), so each unordered pair is compared once. */
 pcl_flowseg::Status
 evaluateMethod (const std::string& name, double describe_ms, const std::function<double (std::size_t, std::size_t)>& similarity,
                 const Options& o, const Collection& c, pcl_flowseg::MethodEvaluation& e)
@@ -189,10 +191,11 @@ evaluateMethod (const std::string& name, double describe_ms, const std::function
   std::vector<std::vector<double>> m;
   {
     flowseg_app::ProgressLine progress ("comparing (" + name + ")", n, o.quiet);
-    m = pcl_flowseg::similarityMatrix (n, similarity, o.threads, [&] (std::size_t done) { progress.update (done); });
+    m = pcl_flowseg::symmetricSimilarityMatrix (n, similarity, o.threads, [&] (std::size_t done) { progress.update (done); });
   }
   e.name = name;
-  e.compare_ms_per_pair = msSince (t0) * pcl_flowseg::jobThreads (o.threads) / static_cast<double> (n * n); // CPU time
+  const double comparisons = 0.5 * static_cast<double> (n * (n + 1));
+  e.compare_ms_per_pair = msSince (t0) * pcl_flowseg::jobThreads (o.threads) / comparisons; // CPU time
   e.describe_ms_per_shape = describe_ms / static_cast<double> (n);
   if (const pcl_flowseg::Status s = pcl_flowseg::scoreRetrieval (m, c.labels, e.scores); !s)
     return s;

@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -340,6 +342,17 @@ TEST (Retrieval, SimilarityMatrixAndScoresFile)
   for (std::size_t i = 0; i < 4; ++i)
     for (std::size_t j = 0; j < 4; ++j)
       EXPECT_EQ (m[i][j], sim (i, j));
+  // A symmetric similarity: each pair once, the same matrix.
+  auto symmetric = [&] (std::size_t i, std::size_t j) { return 1.0 / (1.0 + static_cast<double> (i + j)) + (labels[i] == labels[j]); };
+  std::atomic<int> calls{0};
+  const auto half = symmetricSimilarityMatrix (labels.size (), [&] (std::size_t i, std::size_t j) {
+    ++calls;
+    return symmetric (i, j);
+  }, 2);
+  EXPECT_EQ (calls.load (), 10);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 4; ++j)
+      EXPECT_EQ (half[i][j], symmetric (i, j)) << i << " " << j;
   MethodEvaluation e;
   e.name = "flow\"seg";
   ASSERT_TRUE (scoreRetrieval (m, labels, e.scores));

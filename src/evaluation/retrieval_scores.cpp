@@ -95,4 +95,23 @@ similarityMatrix (std::size_t n, const std::function<double (std::size_t, std::s
   return m;
 }
 
+std::vector<std::vector<double>>
+symmetricSimilarityMatrix (std::size_t n, const std::function<double (std::size_t, std::size_t)>& similarity, unsigned threads,
+                           const std::function<void (std::size_t)>& progress)
+{
+  std::vector<std::vector<double>> m (n, std::vector<double> (n, 0.0));
+  // Row i writes the pairs (i, j >= i) and their mirror images: every entry has one writer.
+  runParallelJobs (
+      n, threads,
+      [&] (std::size_t i) {
+        for (std::size_t j = i; j < n; ++j)
+          m[i][j] = m[j][i] = similarity (i, j);
+      },
+      [&] (std::size_t done, std::size_t) {
+        if (progress)
+          progress (done);
+      });
+  return m;
+}
+
 } // namespace pcl_flowseg

@@ -18,9 +18,24 @@ leastAssignmentCost (const std::vector<double>& cost, std::size_t rows, std::siz
   // count from 1 and row_of[j] == 0 marks a free column.
   std::vector<double> row_potential (rows + 1, 0.0), column_potential (columns + 1, 0.0), slack (columns + 1);
   std::vector<std::size_t> row_of (columns + 1, 0), came_from (columns + 1, 0);
-  std::vector<char> visited (columns + 1);
+  std::vector<char> visited (columns + 1), assigned (rows + 1, 0);
+  // Start from each row's cheapest column (its potential), taken where that column is still free:
+  // the paths below then only have to place the rows that collided.
+  for (std::size_t row = 1; row <= rows; ++row)
+  {
+    const double* costs = &cost[(row - 1) * columns];
+    const std::size_t cheapest = static_cast<std::size_t> (std::min_element (costs, costs + columns) - costs) + 1;
+    row_potential[row] = costs[cheapest - 1];
+    if (row_of[cheapest] == 0)
+    {
+      row_of[cheapest] = row;
+      assigned[row] = 1;
+    }
+  }
   for (std::size_t added = 1; added <= rows; ++added)
   {
+    if (assigned[added])
+      continue;
     row_of[0] = added;
     std::size_t column = 0;
     std::fill (slack.begin (), slack.end (), kInfinity);

@@ -36,4 +36,10 @@ std::vector<std::vector<double>>
 similarityMatrix (std::size_t n, const std::function<double (std::size_t, std::size_t)>& similarity, unsigned threads,
                   const std::function<void (std::size_t rows_done)>& progress = {});
 
+/** \brief As similarityMatrix, for a \a similarity that is exactly symmetric: each pair is compared
+  * once (i <= j, n (n + 1) / 2 calls) and its value written to both (i, j) and (j, i). */
+std::vector<std::vector<double>>
+symmetricSimilarityMatrix (std::size_t n, const std::function<double (std::size_t, std::size_t)>& similarity, unsigned threads,
+                           const std::function<void (std::size_t rows_done)>& progress = {});
+
 } // namespace pcl_flowseg
