@@ -166,7 +166,8 @@ perturbDescription (pcl_flowseg::ShapeDescription& d, std::mt19937& rng)
   for (pcl_flowseg::InnerContext& c : d.inner_contexts)
   {
     perturbFloats (c.distances, gauss, rng);
-    c.thickness = static_cast<float> (std::clamp (c.thickness + gauss (rng), pcl_flowseg::kThicknessLogLow, pcl_flowseg::kThicknessLogHigh));
+    const double thickness = static_cast<double> (c.thickness) + gauss (rng);
+    c.thickness = static_cast<float> (std::clamp (thickness, pcl_flowseg::kThicknessLogLow, pcl_flowseg::kThicknessLogHigh));
   }
 }
 

@@ -141,7 +141,8 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
   if (!(head >> word >> e.label >> sig.dimension >> sig.unit >> sig.interior_volume >> sig.significance >> points >> parts >>
         contour >> contexts) ||
       word != "shape" || (sig.dimension != 2 && sig.dimension != 3) || points > 100000 || parts > kMaxParts ||
-      contour > kContourPoints || contexts > kDistanceSources || !std::isfinite (sig.unit) || !std::isfinite (sig.interior_volume))
+      contour > kContourPoints || contexts > kDistanceSources || !std::isfinite (sig.unit) ||
+      !std::isfinite (sig.interior_volume))
     return reader.error ("expected 'shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS CONTOUR CONTEXTS NAME'");
   std::getline (head >> std::ws, e.name);
   if (e.name.empty ())

@@ -168,7 +168,8 @@ innerContextDistance (const ShapeDescription& first, const ShapeDescription& sec
       double moved = 0.0;
       for (std::size_t k = 0; k < kContextBins; ++k)
         moved += std::abs (row_sums[i][k] - column_sums[j][k]);
-      cost[i * columns.size () + j] = moved * bin_width + kContextThicknessWeight * std::abs (static_cast<double> (rows[i].thickness) - static_cast<double> (columns[j].thickness));
+      const double thicker = std::abs (static_cast<double> (rows[i].thickness) - static_cast<double> (columns[j].thickness));
+      cost[i * columns.size () + j] = moved * bin_width + kContextThicknessWeight * thicker;
     }
   return leastAssignmentCost (cost, rows.size (), columns.size ()) / static_cast<double> (rows.size ());
 }

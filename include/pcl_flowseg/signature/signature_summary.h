@@ -41,8 +41,9 @@ constexpr std::size_t kDescriptionSummarySize =
   * profiles coarsened (4 groups of 4 rows, cumulative sums at 8 of the 32 bins), the thickness
   * profile less its mean, and the square roots of the contour's mean histogram folded onto its
   * mirror image (kContourSummarySize), the inner contexts' mean cumulative histogram (times the bin
-  * width) and mean thickness (times kContextThicknessWeight) (kContextSummarySize), each block scaled by the method's weight for it
-  * (kCombinedWeights3d / 2d; 1 for the single method, 0 for the others).
+  * width) and mean thickness (times kContextThicknessWeight) (kContextSummarySize), each block
+  * scaled by the method's weight for it (kCombinedWeights3d / 2d; 1 for the single method, 0 for
+  * the others).
   * Zero for a signature without a description. */
 std::array<float, kDescriptionSummarySize>
 descriptionSummary (const Signature& signature, MatchMethod method);
