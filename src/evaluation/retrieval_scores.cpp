@@ -77,16 +77,25 @@ scoreRetrieval (const std::vector<std::vector<double>>& similarity, const std::v
   return Status::success ();
 }
 
+namespace {
+
+/** The n x n matrix of \a similarity, rows in parallel; \a symmetric: each pair once. */
 std::vector<std::vector<double>>
-similarityMatrix (std::size_t n, const std::function<double (std::size_t, std::size_t)>& similarity, unsigned threads,
-                  const std::function<void (std::size_t)>& progress)
+fillSimilarityMatrix (std::size_t n, const std::function<double (std::size_t, std::size_t)>& similarity, unsigned threads,
+                      const std::function<void (std::size_t)>& progress, bool symmetric)
 {
   std::vector<std::vector<double>> m (n, std::vector<double> (n, 0.0));
+  // With symmetric, row i writes the pairs (i, j >= i) and their mirror images: every entry has
+  // one writer.
   runParallelJobs (
       n, threads,
       [&] (std::size_t i) {
-        for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t j = symmetric ? i : 0; j < n; ++j)
+        {
           m[i][j] = similarity (i, j);
+          if (symmetric)
+            m[j][i] = m[i][j];
+        }
       },
       [&] (std::size_t done, std::size_t) {
         if (progress)
@@ -95,23 +104,20 @@ similarityMatrix (std::size_t n, const std::function<double (std::size_t, std::s
   return m;
 }
 
+} // namespace
+
+std::vector<std::vector<double>>
+similarityMatrix (std::size_t n, const std::function<double (std::size_t, std::size_t)>& similarity, unsigned threads,
+                  const std::function<void (std::size_t)>& progress)
+{
+  return fillSimilarityMatrix (n, similarity, threads, progress, false);
+}
+
 std::vector<std::vector<double>>
 symmetricSimilarityMatrix (std::size_t n, const std::function<double (std::size_t, std::size_t)>& similarity, unsigned threads,
                            const std::function<void (std::size_t)>& progress)
 {
-  std::vector<std::vector<double>> m (n, std::vector<double> (n, 0.0));
-  // Row i writes the pairs (i, j >= i) and their mirror images: every entry has one writer.
-  runParallelJobs (
-      n, threads,
-      [&] (std::size_t i) {
-        for (std::size_t j = i; j < n; ++j)
-          m[i][j] = m[j][i] = similarity (i, j);
-      },
-      [&] (std::size_t done, std::size_t) {
-        if (progress)
-          progress (done);
-      });
-  return m;
+  return fillSimilarityMatrix (n, similarity, threads, progress, true);
 }
 
 } // namespace pcl_flowseg
