@@ -6,6 +6,7 @@
 #include "test_support.h"
 
 #include "signature/assignment_cost.h"
+#include "signature/interior_graph.h"
 #include "signature/transport_distance.h"
 
 #include <pcl_flowseg/signature/describe_shape.h>
@@ -191,6 +192,38 @@ barSample (double length, double bend)
 }
 
 } // namespace
+
+TEST (InteriorEdges, EveryEdgeOfTheInteriorCellsOnceInOrderOnAnyThreads)
+{
+  for (const char* name : {"animal3d", "hand2d"})
+    for (unsigned threads : {1u, 2u})
+    {
+      FlowParameters params;
+      params.execution.threads = threads;
+      FlowResult r;
+      ASSERT_TRUE (runFlowSegmentation (flowseg_test::shapeSample (name, 3000), params, r).ok) << name;
+      // The plain construction: all ordered corner pairs of the interior cells, sorted, unique.
+      std::vector<std::pair<int, int>> pairs;
+      for (const FlowCell& c : r.cells)
+        for (int a = 0; c.inside == 1 && a <= r.dimension; ++a)
+          for (int b = 0; b <= r.dimension; ++b)
+            if (a != b)
+              pairs.emplace_back (c.vertices[static_cast<std::size_t> (a)], c.vertices[static_cast<std::size_t> (b)]);
+      std::sort (pairs.begin (), pairs.end ());
+      pairs.erase (std::unique (pairs.begin (), pairs.end ()), pairs.end ());
+      ASSERT_GT (pairs.size (), r.vertices.size ()) << name;
+      const InteriorEdges edges (r);
+      ASSERT_EQ (edges.first.size (), r.vertices.size () + 1) << name;
+      ASSERT_EQ (edges.to.size (), pairs.size ()) << name;
+      ASSERT_EQ (edges.length.size (), pairs.size ()) << name;
+      for (std::size_t v = 0; v < r.vertices.size (); ++v)
+        for (std::size_t e = edges.first[v]; e < edges.first[v + 1]; ++e)
+        {
+          ASSERT_EQ (pairs[e], std::make_pair (static_cast<int> (v), edges.to[e])) << name << " edge " << e;
+          ASSERT_EQ (edges.length[e], (r.vertices[v] - r.vertices[static_cast<std::size_t> (edges.to[e])]).norm ());
+        }
+    }
+}
 
 TEST (ShapeDescription, BendingABarKeepsItsInnerDistances)
 {

@@ -4,34 +4,83 @@
  */
 #include "interior_graph.h"
 
+#include <pcl_flowseg/common/parallel_jobs.h>
+
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <queue>
 
 namespace pcl_flowseg {
 
-InteriorEdges::InteriorEdges (const FlowResult& result)
+namespace {
+
+/** Runs \a job (begin, end) over [0, n) in chunks on \a threads threads. */
+void
+inChunks (std::size_t n, unsigned threads, const std::function<void (std::size_t, std::size_t)>& job)
 {
-  std::vector<std::pair<int, int>> pairs;
+  constexpr std::size_t kChunk = 4096;
+  runParallelJobs ((n + kChunk - 1) / kChunk, threads,
+                   [&] (std::size_t k) { job (k * kChunk, std::min (n, (k + 1) * kChunk)); });
+}
+
+/** Every ordered pair of corners of an interior cell, bucketed by its first corner: the second
+  * corners of the pairs from vertex v are ends[bucket[v] .. bucket[v + 1]), repeats included. */
+std::vector<int>
+cornerPairsByVertex (const FlowResult& result, std::vector<std::size_t>& bucket)
+{
+  const std::size_t n = result.vertices.size ();
+  const int corners = result.dimension + 1;
+  bucket.assign (n + 1, 0);
   for (const FlowCell& c : result.cells)
     if (c.inside == 1)
-      for (int a = 0; a <= result.dimension; ++a)
-        for (int b = 0; b <= result.dimension; ++b)
+      for (int a = 0; a < corners; ++a)
+        bucket[static_cast<std::size_t> (c.vertices[static_cast<std::size_t> (a)]) + 1] += static_cast<std::size_t> (corners - 1);
+  std::partial_sum (bucket.begin (), bucket.end (), bucket.begin ());
+  std::vector<int> ends (bucket[n]);
+  std::vector<std::size_t> fill (bucket.begin (), bucket.end () - 1);
+  for (const FlowCell& c : result.cells)
+    if (c.inside == 1)
+      for (int a = 0; a < corners; ++a)
+        for (int b = 0; b < corners; ++b)
           if (a != b)
-            pairs.emplace_back (c.vertices[static_cast<std::size_t> (a)], c.vertices[static_cast<std::size_t> (b)]);
-  std::sort (pairs.begin (), pairs.end ());
-  pairs.erase (std::unique (pairs.begin (), pairs.end ()), pairs.end ());
-  first.assign (result.vertices.size () + 1, 0);
-  for (const auto& e : pairs)
-    ++first[static_cast<std::size_t> (e.first) + 1];
-  for (std::size_t v = 0; v < result.vertices.size (); ++v)
-    first[v + 1] += first[v];
-  for (const auto& e : pairs)
-  {
-    to.push_back (e.second);
-    length.push_back ((result.vertices[static_cast<std::size_t> (e.first)] - result.vertices[static_cast<std::size_t> (e.second)]).norm ());
-  }
+            ends[fill[static_cast<std::size_t> (c.vertices[static_cast<std::size_t> (a)])]++] = c.vertices[static_cast<std::size_t> (b)];
+  return ends;
+}
+
+} // namespace
+
+InteriorEdges::InteriorEdges (const FlowResult& result)
+{
+  // Each vertex's bucket sorted and its repeats dropped: the same edges in the same order as
+  // sorting all pairs at once, in a fraction of the time on large inputs.
+  const std::size_t n = result.vertices.size ();
+  const unsigned threads = result.parameters.execution.threads;
+  std::vector<std::size_t> bucket;
+  std::vector<int> ends = cornerPairsByVertex (result, bucket);
+  first.assign (n + 1, 0);
+  inChunks (n, threads, [&] (std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+    {
+      const auto from = ends.begin () + static_cast<std::ptrdiff_t> (bucket[v]);
+      const auto to_end = ends.begin () + static_cast<std::ptrdiff_t> (bucket[v + 1]);
+      std::sort (from, to_end);
+      first[v + 1] = static_cast<std::size_t> (std::unique (from, to_end) - from);
+    }
+  });
+  std::partial_sum (first.begin (), first.end (), first.begin ());
+  to.resize (first[n]);
+  length.resize (first[n]);
+  inChunks (n, threads, [&] (std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+      for (std::size_t e = first[v]; e < first[v + 1]; ++e)
+      {
+        const int w = ends[bucket[v] + (e - first[v])];
+        to[e] = w;
+        length[e] = (result.vertices[v] - result.vertices[static_cast<std::size_t> (w)]).norm ();
+      }
+  });
 }
 
 void
