@@ -50,9 +50,9 @@ printJson (const std::string& input, const pcl_flowseg::Signature& s)
   for (std::size_t k = 0; k < d.parts.size (); ++k)
   {
     const pcl_flowseg::PartDescription& q = d.parts[k];
-    std::printf ("%s{\"weight\": %s, \"thickness\": %s, \"extent\": %s, \"middle_ratio\": %s, \"smallest_ratio\": %s, \"offset\": %s}",
+    std::printf ("%s{\"weight\": %s, \"thickness\": %s, \"extent\": %s, \"middle_ratio\": %s, \"smallest_ratio\": %s, \"remoteness\": %s}",
                  k ? ", " : "", jsonNumber (q.weight).c_str (), jsonNumber (q.thickness).c_str (), jsonNumber (q.extent).c_str (),
-                 jsonNumber (q.middle_ratio).c_str (), jsonNumber (q.smallest_ratio).c_str (), jsonNumber (q.offset).c_str ());
+                 jsonNumber (q.middle_ratio).c_str (), jsonNumber (q.smallest_ratio).c_str (), jsonNumber (q.remoteness).c_str ());
   }
   std::printf ("], \"distributions\": {");
   const char* separator = "";
@@ -94,9 +94,9 @@ printTable (const std::string& input, const pcl_flowseg::Signature& s)
   std::printf ("weight\tx\ty\tz\n");
   for (const auto& p : s.points)
     std::printf ("%.4f\t%.4f\t%.4f\t%.4f\n", p.weight, p.position.x (), p.position.y (), p.position.z ());
-  std::printf ("\n%zu described parts\nweight\tthickness\textent\tmiddle\tsmallest\toffset\n", s.description.parts.size ());
+  std::printf ("\n%zu described parts\nweight\tthickness\textent\tmiddle\tsmallest\tremoteness\n", s.description.parts.size ());
   for (const auto& q : s.description.parts)
-    std::printf ("%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\n", q.weight, q.thickness, q.extent, q.middle_ratio, q.smallest_ratio, q.offset);
+    std::printf ("%.4f\t%.4f\t%.4f\t%.4f\t%.4f\t%.4f\n", q.weight, q.thickness, q.extent, q.middle_ratio, q.smallest_ratio, q.remoteness);
   for (const auto& [name, bins] : distributions (s.description))
   {
     std::printf ("\n%s distribution (%zu bins):", name, bins->size ());
@@ -144,8 +144,8 @@ main (int argc, char** argv)
   flowseg_app::OptionParser p ("flowseg_signature", "flowseg_signature INPUT [options]",
                                "Prints the shape's significant features as weighted points in the normalised frame (positions\n"
                                "relative to the interior's centroid, in units of interior volume^(1/d); weights sum to 1), then its\n"
-                               "description: the parts (volume share, thickness, extent, axis ratios, offset from the centre, in\n"
-                               "the same unit) and the thickness, inner- and solid-distance distributions (32 bins each).");
+                               "description: the parts (volume share, thickness, extent, axis ratios, remoteness: mean inner\n"
+                               "distance from the shape's sources, in the same unit) and the thickness, inner- and solid-distance distributions (32 bins each).");
   flowseg_app::addMergeOptions (p, params.merge);
   flowseg_app::addSignatureOptions (p, signature);
   flowseg_app::addThreadsOption (p, params.execution.threads);

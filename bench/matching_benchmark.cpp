@@ -136,7 +136,7 @@ perturbDescription (pcl_flowseg::ShapeDescription& d, std::mt19937& rng)
   double total = 0.0;
   for (auto& p : d.parts)
   {
-    for (double* v : {&p.weight, &p.thickness, &p.extent, &p.offset})
+    for (double* v : {&p.weight, &p.thickness, &p.extent, &p.remoteness})
       *v *= factor (rng);
     p.middle_ratio = std::min (1.0, p.middle_ratio * factor (rng));
     p.smallest_ratio = std::min (1.0, p.smallest_ratio * factor (rng));

@@ -221,10 +221,10 @@ present=$("$db" list "$work/conc.db" | wc -l)
 [ ! -s "$work/conc.err" ]; check "concurrent adds report no error" $?
 
 # --- damaged databases: every verb refuses them with the line, none changes them ----------------
-printf 'pcl_flowseg signature database 5\nshapes 2\nshape a 3 1 1 0.02 1 0 0 0 one\np 0 0 0 1\n' > "$work/truncated.db"
-printf 'pcl_flowseg signature database 5\nshapes 1\nshape a 3 1 1 0.02 1 0 0 0 one\np 0 0 1 8888888888888888888888888888888888880.6\n' > "$work/absurd.db"
-printf 'pcl_flowseg signature database 5\nshapes 1\nshape a 3 1 1 0.02 3 0 0 0 one\np 0 0 0 1\nshape b 3 1 1 0.02 1 0 0 0 two\n' > "$work/counts.db"
-printf 'pcl_flowseg signature database 5\n\x00\x01\xff\xfe garbage \x80\n' > "$work/garbage.db"
+printf 'pcl_flowseg signature database 6\nshapes 2\nshape a 3 1 1 0.02 1 0 0 0 one\np 0 0 0 1\n' > "$work/truncated.db"
+printf 'pcl_flowseg signature database 6\nshapes 1\nshape a 3 1 1 0.02 1 0 0 0 one\np 0 0 1 8888888888888888888888888888888888880.6\n' > "$work/absurd.db"
+printf 'pcl_flowseg signature database 6\nshapes 1\nshape a 3 1 1 0.02 3 0 0 0 one\np 0 0 0 1\nshape b 3 1 1 0.02 1 0 0 0 two\n' > "$work/counts.db"
+printf 'pcl_flowseg signature database 6\n\x00\x01\xff\xfe garbage \x80\n' > "$work/garbage.db"
 for bad in truncated absurd counts garbage; do
   cp "$work/$bad.db" "$work/$bad.before"
   expect "db list $bad database" 1 "$bad.db" -- "$db" list "$work/$bad.db"

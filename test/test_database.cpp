@@ -79,7 +79,7 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
     std::ofstream (p) << text;
     return p;
   };
-  const std::string head = "pcl_flowseg signature database 5\nshapes 1\n";
+  const std::string head = "pcl_flowseg signature database 6\nshapes 1\n";
   const auto bins = [] (const std::string& tag) { // a distribution line: all in the first bin
     std::string line = tag + " 1";
     for (std::size_t k = 1; k < kDistributionBins; ++k)
@@ -106,16 +106,17 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
   const std::vector<Case> cases = {
       {"hello world\n", "not a pcl_flowseg signature database"},
       {"pcl_flowseg signature database 7\nshapes 0\n", "version"},
-      {"pcl_flowseg signature database 5\nshapes x\n", ":2:"},
+      {"pcl_flowseg signature database 6\nshapes x\n", ":2:"},
       // Version 1 (no descriptions) is refused with what to do, never misread.
       {"pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 1 name\np 0 0 0 1\n", ":1: a version 1 database"},
       {"pcl_flowseg signature database 2\nshapes 0\n", ":1: a version 2 database (signatures without inner-distance and thickness profiles"},
       {"pcl_flowseg signature database 3\nshapes 0\n", ":1: a version 3 database (signatures without 2D contours"},
       {"pcl_flowseg signature database 4\nshapes 0\n", ":1: a version 4 database (signatures without inner-distance contexts"},
+      {"pcl_flowseg signature database 5\nshapes 0\n", ":1: a version 5 database (signatures without the parts' remoteness"},
       // A count the file cannot hold is refused before anything is allocated (fuzzing: 44 million
       // shapes in a 49-byte file asked for 4 GB).
-      {"pcl_flowseg signature database 5\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
-      {"pcl_flowseg signature database 5\nshapes -1\n", ":2:"},
+      {"pcl_flowseg signature database 6\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
+      {"pcl_flowseg signature database 6\nshapes -1\n", ":2:"},
       {head + "shape a 3 1 1 0.02 2 0 0 0 name\np 0 0 0 0.5\n", ":5:"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 nan 0.5\n", ":4:"},
       {head + "shape a 4 1 1 0.02 1 0 0 0 name\np 0 0 0 1\n", ":3:"},

@@ -135,12 +135,12 @@ TEST (ShapeDescription, PartsAndDistributionsOfTheAnimal)
   ASSERT_GE (d.parts.size (), 6u); // body, head, four legs
   EXPECT_LE (d.parts.size (), kMaxParts);
   EXPECT_GT (d.parts[0].weight, 0.4); // the body
-  // The body is thicker than the thinnest part (a leg or the tail) and lies nearest the centre.
+  // The body is thicker than the thinnest part (a leg or the tail) and is the least remote (nearest to everything by inner distance).
   const auto thinnest = std::min_element (d.parts.begin (), d.parts.end (),
                                           [] (const PartDescription& a, const PartDescription& b) { return a.thickness < b.thickness; });
   EXPECT_GT (d.parts[0].thickness, 1.5 * thinnest->thickness);
   for (std::size_t k = 1; k < d.parts.size (); ++k)
-    EXPECT_LT (d.parts[0].offset, d.parts[k].offset) << k;
+    EXPECT_LT (d.parts[0].remoteness, d.parts[k].remoteness) << k;
   // Seen from the centre out, the thick body comes first and the thin ends of the legs last.
   EXPECT_GT (d.thickness_profile.front (), d.thickness_profile.back () + 0.5);
   // The same result describes the same way: the sampling seed is fixed.
@@ -238,6 +238,10 @@ TEST (ShapeDescription, BendingABarKeepsItsInnerDistances)
   };
   const double inner = l1 (bar.inner_distance, bent.inner_distance), solid = l1 (bar.solid_distance, bent.solid_distance);
   EXPECT_LT (inner, 0.5 * solid) << "inner " << inner << ", solid " << solid;
+  // Where its largest part lies, by inner distance, bending changes little too.
+  ASSERT_FALSE (bar.parts.empty ());
+  ASSERT_FALSE (bent.parts.empty ());
+  EXPECT_NEAR (bent.parts[0].remoteness, bar.parts[0].remoteness, 0.1 * bar.parts[0].remoteness);
 }
 
 TEST (ShapeDescription, InnerProfilesRunFromTheCentreToTheEnds)
@@ -346,7 +350,7 @@ TEST_P (DescriptionInvariance, ARescaledCopyIsDescribedExactlyTheSame)
   {
     EXPECT_NEAR (a.parts[k].weight, b.parts[k].weight, 1e-12);
     EXPECT_NEAR (a.parts[k].thickness, b.parts[k].thickness, 1e-12);
-    EXPECT_NEAR (a.parts[k].offset, b.parts[k].offset, 1e-12);
+    EXPECT_NEAR (a.parts[k].remoteness, b.parts[k].remoteness, 1e-12);
   }
   EXPECT_EQ (a.thickness, b.thickness);
   EXPECT_EQ (a.inner_distance, b.inner_distance);
@@ -436,7 +440,7 @@ TEST (ShapeDescription, TheDatabaseKeepsDescriptionsExactlyAndRanksByThem)
   const ShapeDescription& before = db.entries ()[0].signature.description;
   const ShapeDescription& after = back.entries ()[0].signature.description;
   ASSERT_EQ (after.parts.size (), before.parts.size ());
-  EXPECT_EQ (after.parts[1].offset, before.parts[1].offset);
+  EXPECT_EQ (after.parts[1].remoteness, before.parts[1].remoteness);
   EXPECT_EQ (after.solid_distance, before.solid_distance);
   EXPECT_EQ (after.inner_profiles, before.inner_profiles);
   EXPECT_EQ (after.thickness_profile, before.thickness_profile);

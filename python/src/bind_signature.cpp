@@ -122,13 +122,13 @@ bindSignatureClass (py::module_& m)
             for (std::size_t i = 0; i < parts.size (); ++i)
             {
               const auto& p = parts[i];
-              const double values[6] = {p.weight, p.thickness, p.extent, p.middle_ratio, p.smallest_ratio, p.offset};
+              const double values[6] = {p.weight, p.thickness, p.extent, p.middle_ratio, p.smallest_ratio, p.remoteness};
               for (py::ssize_t k = 0; k < 6; ++k)
                 rows (static_cast<py::ssize_t> (i), k) = values[k];
             }
             return out;
           }, "(k, 6) described parts, by decreasing weight: weight, thickness, extent, middle_ratio, smallest_ratio, "
-             "offset (lengths in the signature's unit). Empty for signatures built from arrays.")
+             "remoteness (lengths in the signature's unit). Empty for signatures built from arrays.")
       .def_property_readonly ("distributions", [] (const Signature& s) {
             py::dict out;
             const auto& d = s.description;

@@ -42,12 +42,13 @@ readDatabaseHeader (std::istream& in, const std::string& path, std::size_t& coun
   int version = 0;
   if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version))
     return lineError (path, 1, "no database version");
-  if (version >= 1 && version <= 4)
+  if (version >= 1 && version <= 5)
     return lineError (path, 1, "a version " + std::to_string (version) + " database (signatures without " +
                                    (version == 1   ? "shape descriptions"
                                     : version == 2 ? "inner-distance and thickness profiles"
                                     : version == 3 ? "2D contours"
-                                                   : "inner-distance contexts") +
+                                    : version == 4 ? "inner-distance contexts"
+                                                   : "the parts' remoteness") +
                                    ", written by an older pcl_flowseg): rebuild it with flowseg_db build");
   if (version != kDatabaseVersion)
     return lineError (path, 1, "unsupported database version (this build reads version " +
@@ -88,9 +89,9 @@ readPart (LineReader& reader, PartDescription& p)
 {
   std::string line, word;
   if (!reader.next (line) || !(std::istringstream (line) >> word >> p.weight >> p.thickness >> p.extent >> p.middle_ratio >>
-                               p.smallest_ratio >> p.offset) ||
+                               p.smallest_ratio >> p.remoteness) ||
       word != "q")
-    return reader.error ("expected 'q WEIGHT THICKNESS EXTENT MIDDLE SMALLEST OFFSET'");
+    return reader.error ("expected 'q WEIGHT THICKNESS EXTENT MIDDLE SMALLEST REMOTENESS'");
   return Status::success ();
 }
 
@@ -193,7 +194,7 @@ writeShape (std::ostream& out, const ShapeEntry& e)
     out << "p " << p.position.x () << " " << p.position.y () << " " << p.position.z () << " " << p.weight << "\n";
   for (const auto& p : d.parts)
     out << "q " << p.weight << " " << p.thickness << " " << p.extent << " " << p.middle_ratio << " " << p.smallest_ratio << " "
-        << p.offset << "\n";
+        << p.remoteness << "\n";
   if (d.parts.empty ())
     return;
   std::vector<std::pair<const char*, const Distribution*>> tagged{{"t", &d.thickness}, {"i", &d.inner_distance}, {"s", &d.solid_distance}};

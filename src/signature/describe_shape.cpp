@@ -23,19 +23,21 @@ describeShape (const FlowResult& result, ShapeDescription& description)
   InteriorFrame frame;
   frame.segments = segmentsOnSide (result, FeatureSide::Interior);
   for (int k : frame.segments)
-  {
-    const FlowSegment& s = result.segments[static_cast<std::size_t> (k)];
-    frame.volume += s.volume;
-    frame.centre += s.volume * s.centroid;
-  }
+    frame.volume += result.segments[static_cast<std::size_t> (k)].volume;
   if (!(frame.volume > 0.0))
     return Status::error ("the shape has no interior: nothing to describe");
-  frame.centre /= frame.volume;
   frame.unit = std::pow (frame.volume, 1.0 / result.dimension);
-  description.parts = describeParts (result, frame);
+  std::vector<int> part_maxima;
+  description.parts = describeParts (result, frame, part_maxima);
+  for (int cell : part_maxima)
+    if (cell < 0 || static_cast<std::size_t> (cell) >= result.cells.size ())
+    {
+      description = ShapeDescription ();
+      return Status::error ("an interior segment without a maximum cell: the segmentation is inconsistent");
+    }
   // One graph of the interior's edges for every inner distance measured.
   const InteriorEdges edges (result);
-  describeInteriorDistributions (result, frame, edges, description);
+  describeInteriorDistributions (result, frame, edges, part_maxima, description);
   describeContour (result, edges, description);
   return checkShapeDescription (description);
 }

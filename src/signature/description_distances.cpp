@@ -86,8 +86,23 @@ partPoint (const PartDescription& p)
   const PartAttributeWeights& w = kPartAttributeWeights;
   Eigen::Matrix<double, 6, 1> x;
   x << w.thickness * std::log (p.thickness), w.extent * std::log (p.extent), w.middle_ratio * p.middle_ratio,
-      w.smallest_ratio * p.smallest_ratio, w.weight * std::log (p.weight), w.offset * p.offset;
+      w.smallest_ratio * p.smallest_ratio, w.weight * std::log (p.weight), w.remoteness * p.remoteness;
   return x;
+}
+
+std::vector<double>
+partMasses (const ShapeDescription& description)
+{
+  std::vector<double> masses;
+  double total = 0.0;
+  for (const PartDescription& p : description.parts)
+  {
+    masses.push_back (std::pow (p.weight, kPartMassExponent));
+    total += masses.back ();
+  }
+  for (double& m : masses)
+    m /= total;
+  return masses;
 }
 
 double
@@ -96,29 +111,22 @@ partDistance (const ShapeDescription& first, const ShapeDescription& second)
   // The transport is solved in one fixed order of the two part lists, so that rounding cannot make
   // the distance from a to b differ from the distance from b to a.
   const auto key = [] (const PartDescription& p) {
-    return std::make_tuple (p.weight, p.thickness, p.extent, p.middle_ratio, p.smallest_ratio, p.offset);
+    return std::make_tuple (p.weight, p.thickness, p.extent, p.middle_ratio, p.smallest_ratio, p.remoteness);
   };
   const bool swap = std::lexicographical_compare (second.parts.begin (), second.parts.end (), first.parts.begin (), first.parts.end (),
                                                   [&] (const PartDescription& x, const PartDescription& y) { return key (x) < key (y); });
   const ShapeDescription& a = swap ? second : first;
   const ShapeDescription& b = swap ? first : second;
-  std::vector<double> wa, wb;
   std::vector<Eigen::Matrix<double, 6, 1>> pa, pb;
   for (const PartDescription& p : a.parts)
-  {
-    wa.push_back (p.weight);
     pa.push_back (partPoint (p));
-  }
   for (const PartDescription& p : b.parts)
-  {
-    wb.push_back (p.weight);
     pb.push_back (partPoint (p));
-  }
   Eigen::MatrixXd cost (static_cast<Eigen::Index> (pa.size ()), static_cast<Eigen::Index> (pb.size ()));
   for (std::size_t i = 0; i < pa.size (); ++i)
     for (std::size_t j = 0; j < pb.size (); ++j)
       cost (static_cast<Eigen::Index> (i), static_cast<Eigen::Index> (j)) = (pa[i] - pb[j]).norm ();
-  return transportDistance (wa, wb, cost);
+  return transportDistance (partMasses (a), partMasses (b), cost);
 }
 
 namespace {

@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace pcl_flowseg {
 
 /** \brief A part as a point in the space where Euclidean distance compares parts: its attributes
@@ -16,9 +18,14 @@ namespace pcl_flowseg {
 Eigen::Matrix<double, 6, 1>
 partPoint (const PartDescription& part);
 
-/** \brief Earth mover's distance between the parts of \a a and \a b; moving a part onto another
-  * costs the weighted Euclidean distance of their attributes (kPartAttributeWeights). Exactly
-  * symmetric. */
+/** \brief The mass of each part in partDistance: its weight to the power kPartMassExponent, the
+  * masses summing to 1 (none without parts). */
+std::vector<double>
+partMasses (const ShapeDescription& description);
+
+/** \brief Earth mover's distance between the parts of \a a and \a b with masses partMasses; moving
+  * a part onto another costs the weighted Euclidean distance of their attributes
+  * (kPartAttributeWeights). Exactly symmetric. */
 double
 partDistance (const ShapeDescription& a, const ShapeDescription& b);
 

@@ -276,14 +276,48 @@ fillInnerContexts (const FlowResult& result, const std::vector<int>& sources, co
   }
 }
 
+/** The remoteness of each part (PartDescription::remoteness): the weighted mean over the sources
+  * of the inner distance to the centroid of the part's maximum cell, the straight distance where
+  * the interior falls apart. \a part_rows[s][p] is the inner distance from source s to part p. */
 void
-measureDistances (const FlowResult& result, const InteriorEdges& edges, const std::vector<int>& drawn, double unit,
-                  ShapeDescription& description)
+fillPartRemoteness (const FlowResult& result, const std::vector<int>& sources, const std::vector<double>& weights,
+                    const std::vector<std::vector<double>>& part_rows, const std::vector<int>& part_maxima, double unit,
+                    std::vector<PartDescription>& parts)
+{
+  double total = 0.0;
+  for (double w : weights)
+    total += w;
+  for (std::size_t p = 0; p < parts.size () && p < part_maxima.size (); ++p)
+  {
+    const Eigen::Vector3d& at = result.cells[static_cast<std::size_t> (part_maxima[p])].centroid;
+    double sum = 0.0;
+    for (std::size_t s = 0; s < sources.size (); ++s)
+    {
+      const double inner = part_rows[s][p];
+      sum += weights[s] * (std::isfinite (inner) ? inner : (at - result.cells[static_cast<std::size_t> (sources[s])].centroid).norm ());
+    }
+    parts[p].remoteness = total > 0.0 ? sum / total / unit : 0.0;
+  }
+}
+
+void
+measureDistances (const FlowResult& result, const InteriorEdges& edges, const std::vector<int>& drawn,
+                  const std::vector<int>& part_maxima, double unit, ShapeDescription& description)
 {
   std::vector<int> sources;
   std::vector<double> weights, solid, solid_weight;
   spreadSources (result, drawn, sources, weights);
-  std::vector<std::vector<double>> inner_rows = innerDistanceRows (result, edges, sources, drawn);
+  // One search per source reaches the drawn cells and the parts' maxima alike.
+  std::vector<int> targets (drawn);
+  targets.insert (targets.end (), part_maxima.begin (), part_maxima.end ());
+  std::vector<std::vector<double>> inner_rows = innerDistanceRows (result, edges, sources, targets);
+  std::vector<std::vector<double>> part_rows (sources.size ());
+  for (std::size_t s = 0; s < sources.size (); ++s)
+  {
+    part_rows[s].assign (inner_rows[s].begin () + static_cast<std::ptrdiff_t> (drawn.size ()), inner_rows[s].end ());
+    inner_rows[s].resize (drawn.size ());
+  }
+  fillPartRemoteness (result, sources, weights, part_rows, part_maxima, unit, description.parts);
   std::vector<Distribution> seen (sources.size (), Distribution{});
   std::vector<double> remoteness (drawn.size (), 0.0);
   for (std::size_t s = 0; s < sources.size (); ++s)
@@ -326,13 +360,13 @@ measureDistances (const FlowResult& result, const InteriorEdges& edges, const st
 
 void
 describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, const InteriorEdges& edges,
-                               ShapeDescription& description)
+                               const std::vector<int>& part_maxima, ShapeDescription& description)
 {
   const std::vector<int> drawn = drawInteriorCells (result);
   for (int c : drawn)
     addToBins (description.thickness, 0.5 * std::log (result.cells[static_cast<std::size_t> (c)].squared_radius) - std::log (frame.unit),
                kThicknessLogLow, kThicknessLogHigh);
-  measureDistances (result, edges, drawn, frame.unit, description);
+  measureDistances (result, edges, drawn, part_maxima, frame.unit, description);
   normalise (description.thickness);
   normalise (description.inner_distance);
   normalise (description.solid_distance);

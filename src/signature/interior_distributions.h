@@ -14,10 +14,11 @@
 namespace pcl_flowseg {
 
 /** \brief Fills the distributions of \a description (thickness, inner and solid distances, inner-
-  * distance profiles) from kInteriorSamples interior cells drawn by volume with a fixed seed; inner
-  * distances run along \a edges (the result's). */
+  * distance profiles and contexts, thickness profile) from kInteriorSamples interior cells drawn by
+  * volume with a fixed seed, and the remoteness of its parts, whose maxima are the cells
+  * \a part_maxima (describeParts); inner distances run along \a edges (the result's). */
 void
 describeInteriorDistributions (const FlowResult& result, const InteriorFrame& frame, const InteriorEdges& edges,
-                               ShapeDescription& description);
+                               const std::vector<int>& part_maxima, ShapeDescription& description);
 
 } // namespace pcl_flowseg

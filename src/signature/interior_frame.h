@@ -4,19 +4,16 @@
  */
 #pragma once
 
-#include <Eigen/Core>
-
 #include <vector>
 
 namespace pcl_flowseg {
 
-/** \brief The interior segments of a segmentation, their centroid and length unit. */
+/** \brief The interior segments of a segmentation and their length unit. */
 struct InteriorFrame
 {
-  std::vector<int> segments;                        ///< interior segments (indices into result.segments)
-  double volume = 0.0;                              ///< their total volume (area in 2D)
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero (); ///< their volume-weighted centroid
-  double unit = 1.0;                                ///< volume^(1/d)
+  std::vector<int> segments; ///< interior segments (indices into result.segments)
+  double volume = 0.0;       ///< their total volume (area in 2D)
+  double unit = 1.0;         ///< volume^(1/d)
 };
 
 } // namespace pcl_flowseg

@@ -65,14 +65,13 @@ describePart (const FlowSegment& segment, const Eigen::Matrix3d& moments, const 
   part.extent = std::max (kShortestLength, std::sqrt (largest) / frame.unit);
   part.middle_ratio = ratio (e[1]);
   part.smallest_ratio = dimension == 3 ? ratio (e[0]) : 0.0;
-  part.offset = (segment.centroid - frame.centre).norm () / frame.unit;
   return part;
 }
 
 } // namespace
 
 std::vector<PartDescription>
-describeParts (const FlowResult& result, const InteriorFrame& frame)
+describeParts (const FlowResult& result, const InteriorFrame& frame, std::vector<int>& maximum_cells)
 {
   const std::vector<int> chosen = chooseParts (result, frame);
   const std::vector<Eigen::Matrix3d> moments = partMoments (result, chosen);
@@ -80,11 +79,13 @@ describeParts (const FlowResult& result, const InteriorFrame& frame)
   for (int k : chosen)
     total += result.segments[static_cast<std::size_t> (k)].volume;
   std::vector<PartDescription> parts;
+  maximum_cells.clear ();
   for (std::size_t p = 0; p < chosen.size (); ++p)
   {
     const FlowSegment& segment = result.segments[static_cast<std::size_t> (chosen[p])];
     parts.push_back (describePart (segment, moments[p], frame, result.dimension));
     parts.back ().weight = segment.volume / total;
+    maximum_cells.push_back (segment.maximum.cell);
   }
   return parts;
 }

@@ -13,8 +13,10 @@
 
 namespace pcl_flowseg {
 
-/** \brief The parts of ShapeDescription::parts, measured on the cells of each described segment. */
+/** \brief The parts of ShapeDescription::parts, measured on the cells of each described segment;
+  * \a maximum_cells gets the cell of each part's maximum (in the parts' order). Their remoteness is
+  * left 0: describeInteriorDistributions measures it, by inner distances. */
 std::vector<PartDescription>
-describeParts (const FlowResult& result, const InteriorFrame& frame);
+describeParts (const FlowResult& result, const InteriorFrame& frame, std::vector<int>& maximum_cells);
 
 } // namespace pcl_flowseg

@@ -37,8 +37,8 @@ checkPart (const PartDescription& p, std::size_t k)
   if (!(p.weight > 0.0 && p.weight <= 1.0))
     return Status::error (which + " has a weight outside (0, 1]");
   if (!(p.thickness > 0.0 && p.thickness <= kLargestLength) || !(p.extent > 0.0 && p.extent <= kLargestLength) ||
-      !(p.offset >= 0.0 && p.offset <= kLargestLength))
-    return Status::error (which + " has a thickness, extent or offset that is not a finite length");
+      !(p.remoteness >= 0.0 && p.remoteness <= kLargestLength))
+    return Status::error (which + " has a thickness, extent or remoteness that is not a finite length");
   if (!(p.middle_ratio >= 0.0 && p.middle_ratio <= 1.0) || !(p.smallest_ratio >= 0.0 && p.smallest_ratio <= 1.0))
     return Status::error (which + " has an axis ratio outside [0, 1]");
   return Status::success ();

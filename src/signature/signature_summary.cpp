@@ -130,11 +130,12 @@ descriptionSummary (const Signature& signature, MatchMethod method)
     for (double v : *h)
       out[at++] = static_cast<float> (weight * std::sqrt (v));
   Eigen::Matrix<double, 6, 1> mean = Eigen::Matrix<double, 6, 1>::Zero (), square = mean;
-  for (const PartDescription& p : d.parts)
+  const std::vector<double> masses = partMasses (d);
+  for (std::size_t k = 0; k < d.parts.size (); ++k)
   {
-    const Eigen::Matrix<double, 6, 1> x = partPoint (p);
-    mean += p.weight * x;
-    square += p.weight * x.cwiseProduct (x);
+    const Eigen::Matrix<double, 6, 1> x = partPoint (d.parts[k]);
+    mean += masses[k] * x;
+    square += masses[k] * x.cwiseProduct (x);
   }
   const Eigen::Matrix<double, 6, 1> spread = (square - mean.cwiseProduct (mean)).cwiseMax (0.0).cwiseSqrt ();
   for (int k = 0; k < 6; ++k)

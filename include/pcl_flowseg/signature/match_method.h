@@ -74,7 +74,7 @@ struct DescriptionWeights
 
 /** \brief The combination for 3D shapes, chosen on shrec07_dev and TOSCA together (the best sum of
   * nearest neighbour and first tier over a grid of weights; docs/method.md). */
-constexpr DescriptionWeights kCombinedWeights3d{4.5, 0.75, 0.0, 0.0, 0.0, 4.0, 0.0, 4.0};
+constexpr DescriptionWeights kCombinedWeights3d{3.0, 0.5, 0.0, 0.0, 0.0, 4.0, 0.0, 5.0};
 
 /** \brief The combination for 2D shapes, chosen on Kimia-216 and Tari-1000 together (the best sum of
   * bull's eye scores over a grid of weights). */
@@ -96,11 +96,17 @@ struct PartAttributeWeights
   double middle_ratio = 1.0;   ///< PartDescription::middle_ratio
   double smallest_ratio = 1.0; ///< PartDescription::smallest_ratio
   double weight = 0.2;         ///< log PartDescription::weight
-  double offset = 0.5;         ///< PartDescription::offset
+  double remoteness = 0.5;     ///< PartDescription::remoteness
 };
 
 /** \brief The part attribute weights MatchMethod::Parts uses. */
 constexpr PartAttributeWeights kPartAttributeWeights{};
+
+/** \brief The mass a part brings to the earth mover's distance of MatchMethod::Parts: its volume
+  * share raised to this power, the masses then scaled to sum to 1. Below 1 the small parts that
+  * tell shapes apart (a head, a hand) weigh more against the large ones (a torso, whose split
+  * varies from pose to pose). */
+constexpr double kPartMassExponent = 0.3;
 
 /** \brief Weight of the difference of two sources' log thickness in the cost of matching their inner
   * contexts (the earth mover's distance of their histograms counts 1). */

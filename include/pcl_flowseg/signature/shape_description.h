@@ -59,7 +59,10 @@ struct PartDescription
   double extent = 0.0;         ///< root of the largest principal variance of the part's cells
   double middle_ratio = 0.0;   ///< root of the middle over the largest principal variance, in [0, 1]
   double smallest_ratio = 0.0; ///< root of the smallest over the largest (0 in 2D), in [0, 1]
-  double offset = 0.0;         ///< distance of the part's centroid from the interior's centroid
+  /** Mean inner distance from the shape's sources (ShapeDescription::inner_contexts) to the
+    * centroid of the part's maximum cell: where in the shape the part lies (a torso little, a
+    * hand much), and unlike a straight distance from the centre it stays when a limb bends. */
+  double remoteness = 0.0;
 };
 
 /** \brief A volume-weighted histogram that sums to 1 (values outside the range go to the end bins). */
