@@ -145,7 +145,8 @@ main (int argc, char** argv)
                                "Prints the shape's significant features as weighted points in the normalised frame (positions\n"
                                "relative to the interior's centroid, in units of interior volume^(1/d); weights sum to 1), then its\n"
                                "description: the parts (volume share, thickness, extent, axis ratios, remoteness: mean inner\n"
-                               "distance from the shape's sources, in the same unit) and the thickness, inner- and solid-distance distributions (32 bins each).");
+                               "distance from the shape's sources, in the same unit) and the thickness, inner- and\n"
+                               "solid-distance distributions (32 bins each).");
   flowseg_app::addMergeOptions (p, params.merge);
   flowseg_app::addSignatureOptions (p, signature);
   flowseg_app::addThreadsOption (p, params.execution.threads);

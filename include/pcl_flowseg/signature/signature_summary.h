@@ -37,7 +37,8 @@ constexpr std::size_t kDescriptionSummarySize =
 /** \brief A vector in which shapes whose descriptions are near under \a method (not
   * MatchMethod::Paper) lie close together (Euclidean distance): the square roots of the three
   * distributions' bins (so that Euclidean distance behaves like the L1 and chi-square distances),
-  * then the weighted mean and spread of the parts' attribute points, then the inner-distance
+  * then the mean and spread of the parts' attribute points (with the masses the parts' earth
+  * mover's distance gives them, kPartMassExponent), then the inner-distance
   * profiles coarsened (4 groups of 4 rows, cumulative sums at 8 of the 32 bins), the thickness
   * profile less its mean, and the square roots of the contour's mean histogram folded onto its
   * mirror image (kContourSummarySize), the inner contexts' mean cumulative histogram (times the bin
