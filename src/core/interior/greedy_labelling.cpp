@@ -105,6 +105,7 @@ public:
           continue;
         const double s = state.agreement[static_cast<std::size_t> (i)];
         evidence (static_cast<std::size_t> (nb), outside == (s >= 0), std::abs (s));
+        prefetchNeighbours (static_cast<std::size_t> (nb));
       }
     }
     for (std::size_t c = 0; c < cells_.size (); ++c)
@@ -113,6 +114,17 @@ public:
 
 private:
   static bool isOutside (const GreedyCell& state) { return state.out_score >= state.in_score; }
+
+  /** A cell that just heard evidence is likely among the next popped (the front moves through
+    * its neighbours): its neighbours start loading now, a whole pop ahead of their use. */
+  void
+  prefetchNeighbours (std::size_t c) const
+  {
+    const GreedyCell& state = state_[c];
+    for (int i = 0; i < f_; ++i)
+      if (state.neighbors[static_cast<std::size_t> (i)] >= 0)
+        __builtin_prefetch (&state_[static_cast<std::size_t> (state.neighbors[static_cast<std::size_t> (i)])]);
+  }
 
   double agreement (std::size_t c, int i) const { return state_[c].agreement[static_cast<std::size_t> (i)]; }
 
