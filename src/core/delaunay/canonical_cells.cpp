@@ -13,19 +13,41 @@
 namespace pcl_flowseg {
 namespace core {
 
+namespace {
+/** Puts the smaller of positions a and b first, carrying the slots; counts a swap in \a odd. */
+inline void
+compareExchange (std::array<int, 4>& vertices, std::array<int, 4>& slot, std::size_t a, std::size_t b, bool& odd)
+{
+  if (vertices[a] > vertices[b])
+  {
+    std::swap (vertices[a], vertices[b]);
+    std::swap (slot[a], slot[b]);
+    odd = !odd;
+  }
+}
+} // namespace
+
 void
 canonicalVertexOrder (std::array<int, 4>& vertices, int f, std::array<int, 4>& slot)
 {
-  for (int i = 0; i < 4; ++i)
-    slot[static_cast<std::size_t> (i)] = i;
+  slot = {{0, 1, 2, 3}};
   bool odd = false;
-  for (int i = 1; i < f; ++i)
-    for (int j = i; j > 0 && vertices[static_cast<std::size_t> (j - 1)] > vertices[static_cast<std::size_t> (j)]; --j)
-    {
-      std::swap (vertices[static_cast<std::size_t> (j - 1)], vertices[static_cast<std::size_t> (j)]);
-      std::swap (slot[static_cast<std::size_t> (j - 1)], slot[static_cast<std::size_t> (j)]);
-      odd = !odd;
-    }
+  // Sorting networks (5 exchanges for 4, 3 for 3), called once per cell. Each exchange is a
+  // transposition, so their count's parity is the permutation's whatever the network.
+  if (f == 4)
+  {
+    compareExchange (vertices, slot, 0, 1, odd);
+    compareExchange (vertices, slot, 2, 3, odd);
+    compareExchange (vertices, slot, 0, 2, odd);
+    compareExchange (vertices, slot, 1, 3, odd);
+    compareExchange (vertices, slot, 1, 2, odd);
+  }
+  else
+  {
+    compareExchange (vertices, slot, 0, 1, odd);
+    compareExchange (vertices, slot, 1, 2, odd);
+    compareExchange (vertices, slot, 0, 1, odd);
+  }
   if (odd)
   {
     std::swap (vertices[static_cast<std::size_t> (f - 2)], vertices[static_cast<std::size_t> (f - 1)]);

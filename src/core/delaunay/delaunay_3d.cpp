@@ -62,7 +62,18 @@ extractLinks (Delaunay& dt)
     }
   std::vector<CellLinks> links;
   assignOnHugePages (links, handles.size ());
-  parallelFor (handles.size (), [&] (std::size_t k) {
+  const std::size_t count = handles.size ();
+  parallelFor (count, [&] (std::size_t k) {
+    // Pointer chasing all over CGAL's cells: the cell 16 ahead starts loading, and the vertices
+    // and neighbours of the cell 8 ahead (loaded by then).
+    if (k + 16 < count)
+      __builtin_prefetch (&*handles[k + 16]);
+    if (k + 8 < count)
+      for (int i = 0; i < 4; ++i)
+      {
+        __builtin_prefetch (&*handles[k + 8]->vertex (i));
+        __builtin_prefetch (&*handles[k + 8]->neighbor (i));
+      }
     CellLinks& cell = links[k];
     for (int i = 0; i < 4; ++i)
     {
