@@ -18,8 +18,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <future>
 #include <iostream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -101,11 +103,19 @@ writeOutputs (const Options& o, const pcl::FlowSegmentation<pcl::PointNormal>& s
   info.input = o.input;
   info.read_ms = read_ms;
   info.significance = o.significance;
+  // The surface, the largest file, is written beside the others when a second thread is allowed.
+  const bool surface = o.surface && o.params.interior.separate;
+  const bool beside = o.params.execution.threads != 1 && std::thread::hardware_concurrency () > 1;
+  std::future<pcl_flowseg::Status> surface_written;
+  if (surface && beside)
+    surface_written = std::async (std::launch::async, [&] () {
+      return pcl_flowseg::writeSurfacePly (o.prefix + ".surface.ply", result, o.binary);
+    });
   std::vector<pcl_flowseg::Status> written = {pcl_flowseg::writeLabelCloud (o.prefix + ".labels.pcd", labels, o.binary),
                                               pcl_flowseg::writeSegmentationJson (o.prefix + ".json", result, info),
                                               pcl_flowseg::writeSegmentationPly (o.prefix + ".ply", result, labels, o.binary)};
-  if (o.surface && o.params.interior.separate)
-    written.push_back (pcl_flowseg::writeSurfacePly (o.prefix + ".surface.ply", result, o.binary));
+  if (surface)
+    written.push_back (beside ? surface_written.get () : pcl_flowseg::writeSurfacePly (o.prefix + ".surface.ply", result, o.binary));
   if (result.dimension == 2)
     written.push_back (pcl_flowseg::writeSegmentationSvg (o.prefix + ".svg", result));
   for (const auto& s : written)
