@@ -29,7 +29,7 @@ PUBLIC_MAY_NOT = {'core'}
 # Inside the core (src/core/STEP/): what each step of the pipeline may include besides itself.
 CORE_ALLOWED = {
     'support': set(),
-    'geometry': set(),
+    'geometry': {'support'},
     'delaunay': {'support'},
     'preparation': {'support', 'geometry'},
     'flow': {'support', 'geometry', 'delaunay'},

@@ -5,7 +5,9 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "core/delaunay/delaunay_cells.h"
+#include "core/delaunay/canonical_cells.h"
 #include "core/delaunay/flow_predicate.h"
+#include "core/geometry/cell_geometry.h"
 #include "core/support/cell_heap.h"
 #include "core/support/parallel.h"
 #include "core/support/system_load.h"
@@ -19,6 +21,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <csignal>
 #include <random>
@@ -125,6 +129,59 @@ TEST (ParallelCore, ParallelInsertionGivesTheSequentialCells)
   {
     ASSERT_EQ (sequential[k].vertices, parallel[k].vertices) << k;
     ASSERT_EQ (sequential[k].neighbors, parallel[k].neighbors) << k;
+  }
+}
+
+TEST (ParallelCore, VertexIncidenceListsEachVertexsCellsInOrderOnAnyThreads)
+{
+  const auto points = sampleBoundary (sampleShape ("snowman3d"), 20000, 4);
+  std::vector<FlowCell> cells;
+  ASSERT_TRUE (core::triangulate3D (points, cells, core::Insertion::Sequential));
+  // The plain construction: every vertex's cells, in ascending order.
+  std::vector<std::vector<int>> rows (points.size ());
+  for (std::size_t c = 0; c < cells.size (); ++c)
+    for (int v : cells[c].vertices)
+      rows[static_cast<std::size_t> (v)].push_back (static_cast<int> (c));
+  for (unsigned threads : {1u, 2u, 3u})
+  {
+    const core::WorkerThreads workers (threads);
+    const core::VertexIncidence inc = core::vertexIncidence (cells, points.size (), 3);
+    ASSERT_EQ (inc.first.size (), points.size () + 1);
+    ASSERT_EQ (inc.cells.size (), 4 * cells.size ());
+    for (std::size_t v = 0; v < points.size (); ++v)
+      ASSERT_EQ (std::vector<int> (inc.cells.begin () + static_cast<std::ptrdiff_t> (inc.first[v]),
+                                   inc.cells.begin () + static_cast<std::ptrdiff_t> (inc.first[v + 1])),
+                 rows[v])
+          << "vertex " << v << ", " << threads << " threads";
+  }
+}
+
+TEST (CanonicalCells, VerticesSortedAndOrientationKept)
+{
+  // Every order of 3 and 4 distinct vertices: sorted, except the last two swapped back after an
+  // odd permutation (the sign of the permutation decides, whatever the sorting method).
+  for (int f : {3, 4})
+  {
+    std::array<int, 4> start{{7, 2, 9, 4}};
+    std::sort (start.begin (), start.begin () + f);
+    std::array<int, 4> perm = start;
+    do
+    {
+      int inversions = 0;
+      for (int i = 0; i < f; ++i)
+        for (int j = i + 1; j < f; ++j)
+          inversions += perm[static_cast<std::size_t> (i)] > perm[static_cast<std::size_t> (j)];
+      std::array<int, 4> v = perm, slot;
+      core::canonicalVertexOrder (v, f, slot);
+      std::array<int, 4> expected = start;
+      if (inversions % 2 == 1)
+        std::swap (expected[static_cast<std::size_t> (f - 2)], expected[static_cast<std::size_t> (f - 1)]);
+      for (int i = 0; i < f; ++i)
+      {
+        EXPECT_EQ (v[static_cast<std::size_t> (i)], expected[static_cast<std::size_t> (i)]) << f << " vertices";
+        EXPECT_EQ (perm[static_cast<std::size_t> (slot[static_cast<std::size_t> (i)])], v[static_cast<std::size_t> (i)]);
+      }
+    } while (std::next_permutation (perm.begin (), perm.begin () + f));
   }
 }
 

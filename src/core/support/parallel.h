@@ -75,6 +75,18 @@ gatherInChunks (std::size_t n, const Body& body)
   return results;
 }
 
+/** \brief Calls \a body (k) for each of a few heavy \a tasks (one per chunk of gatherInChunks, say),
+  * in parallel. */
+template <class Body>
+void
+forEachTask (std::size_t tasks, const Body& body)
+{
+  if (tasks == 1)
+    body (std::size_t (0));
+  else
+    tbb::parallel_for (std::size_t (0), tasks, [&] (std::size_t k) { body (k); });
+}
+
 /** \brief The items \a body (begin, end, out) appends for its chunk of [0, n), gathered on all
   * workers and joined in index order: the list the sequential loop would have made. */
 template <class Item, class Body>
