@@ -28,29 +28,35 @@ struct BoundaryCheck
   std::vector<int> nonmanifold; ///< 3D: the vertices on a non-manifold edge or with a non-manifold fan, ascending
 };
 
-/** The facets of inside cells that face an outside cell or the hull; inside volume and cells. */
+/** The facets of inside cells that face an outside cell or the hull (found on all workers, listed
+  * in cell order); inside volume and cells (summed in cell order). */
 Facets
 insideFacets (const FlowResult& r, InteriorReport& rep)
 {
   const int d = r.dimension, f = d + 1;
   rep.inside_volume = 0.0;
   rep.inside_cells = 0;
-  Facets facets;
   for (const FlowCell& c : r.cells)
-  {
-    if (c.inside != 1)
-      continue;
-    rep.inside_volume += c.volume;
-    ++rep.inside_cells;
-    for (int i = 0; i < f; ++i)
+    if (c.inside == 1)
     {
-      const int nb = c.neighbors[i];
-      if (nb >= 0 && r.cells[static_cast<std::size_t> (nb)].inside == 1)
-        continue;
-      facets.push_back ({{c.vertices[(i + 1) % f], c.vertices[(i + 2) % f], d == 3 ? c.vertices[(i + 3) % f] : -1}});
+      rep.inside_volume += c.volume;
+      ++rep.inside_cells;
     }
-  }
-  return facets;
+  return gatherListInOrder<std::array<int, 3>> (r.cells.size (), [&] (std::size_t begin, std::size_t end, Facets& facets) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      const FlowCell& c = r.cells[k];
+      if (c.inside != 1)
+        continue;
+      for (int i = 0; i < f; ++i)
+      {
+        const int nb = c.neighbors[i];
+        if (nb >= 0 && r.cells[static_cast<std::size_t> (nb)].inside == 1)
+          continue;
+        facets.push_back ({{c.vertices[(i + 1) % f], c.vertices[(i + 2) % f], d == 3 ? c.vertices[(i + 3) % f] : -1}});
+      }
+    }
+  });
 }
 
 /** 2D: the boundary is a set of edges; every vertex on it must have exactly two. */

@@ -7,6 +7,7 @@
 #include "core/geometry/cell_geometry.h"
 #include "core/interior/sensor_rays.h"
 #include "core/support/cell_heap.h"
+#include "core/support/parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -29,17 +30,30 @@ public:
   {
   }
 
-  /** The outside beyond the convex hull. */
+  /** The outside beyond the convex hull. The hull cells are found on all workers; their evidence
+    * is then given in cell order, as one loop would. */
   void
   hullEvidence ()
   {
-    for (std::size_t c = 0; c < cells_.size (); ++c)
+    const std::vector<int> hull = gatherListInOrder<int> (state_.size (), [&] (std::size_t begin, std::size_t end, std::vector<int>& found) {
+      for (std::size_t c = begin; c < end; ++c)
+        for (int i = 0; i < f_; ++i)
+          if (state_[c].neighbors[static_cast<std::size_t> (i)] < 0)
+          {
+            found.push_back (static_cast<int> (c));
+            break;
+          }
+    });
+    for (int h : hull)
+    {
+      const std::size_t c = static_cast<std::size_t> (h);
       for (int i = 0; i < f_; ++i)
-        if (cells_[c].neighbors[i] < 0)
+        if (state_[c].neighbors[static_cast<std::size_t> (i)] < 0)
         {
           const double s = agreement (c, i);
           evidence (c, s >= 0, std::abs (s));
         }
+    }
   }
 
   /** Oriented normals: a cell whose circumcentre lies along the normals of its vertices is outside. */
@@ -108,8 +122,7 @@ public:
         prefetchNeighbours (static_cast<std::size_t> (nb));
       }
     }
-    for (std::size_t c = 0; c < cells_.size (); ++c)
-      cells_[c].inside = isOutside (state_[c]) ? 0 : 1;
+    parallelFor (cells_.size (), [&] (std::size_t c) { cells_[c].inside = isOutside (state_[c]) ? 0 : 1; });
   }
 
 private:
