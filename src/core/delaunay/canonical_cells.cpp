@@ -4,11 +4,12 @@
  */
 #include "core/delaunay/canonical_cells.h"
 
+#include "core/support/bucket_rows.h"
 #include "core/support/huge_pages.h"
 #include "core/support/parallel.h"
 
 #include <algorithm>
-#include <numeric>
+#include <utility>
 
 namespace pcl_flowseg {
 namespace core {
@@ -69,21 +70,14 @@ std::vector<int>
 canonicalCellOrder (const std::vector<CellLinks>& cells, int f)
 {
   // Bucket by the first vertex (counting sort), then sort each bucket by the rest.
-  const std::size_t n = cells.size ();
   int max_vertex = -1;
   for (const CellLinks& c : cells)
     max_vertex = std::max (max_vertex, c.vertices[0]);
-  std::vector<std::size_t> first (static_cast<std::size_t> (max_vertex) + 2, 0);
-  for (const CellLinks& c : cells)
-    ++first[static_cast<std::size_t> (c.vertices[0]) + 1];
-  std::partial_sum (first.begin (), first.end (), first.begin ());
-  std::vector<int> order;
-  assignOnHugePages (order, n);
-  {
-    std::vector<std::size_t> fill (first.begin (), first.end () - 1);
-    for (std::size_t k = 0; k < n; ++k)
-      order[fill[static_cast<std::size_t> (cells[k].vertices[0])]++] = static_cast<int> (k);
-  }
+  BucketRows buckets = bucketInOrder (cells.size (), static_cast<std::size_t> (max_vertex) + 1, [&] (std::size_t k, const auto& add) {
+    add (static_cast<std::size_t> (cells[k].vertices[0]));
+  });
+  const std::vector<std::size_t>& first = buckets.first;
+  std::vector<int>& order = buckets.items;
   const auto less = [&] (int a, int b) {
     const auto& ta = cells[static_cast<std::size_t> (a)].vertices;
     const auto& tb = cells[static_cast<std::size_t> (b)].vertices;
@@ -92,7 +86,7 @@ canonicalCellOrder (const std::vector<CellLinks>& cells, int f)
   parallelFor (first.size () - 1, [&] (std::size_t v) {
     std::sort (order.begin () + static_cast<std::ptrdiff_t> (first[v]), order.begin () + static_cast<std::ptrdiff_t> (first[v + 1]), less);
   });
-  return order;
+  return std::move (order);
 }
 
 void

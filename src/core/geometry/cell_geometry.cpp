@@ -4,12 +4,13 @@
  */
 #include "core/geometry/cell_geometry.h"
 
-#include "core/support/parallel.h"
+#include "core/support/bucket_rows.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 
 namespace pcl_flowseg {
 namespace core {
@@ -66,38 +67,13 @@ VertexIncidence
 vertexIncidence (const std::vector<FlowCell>& cells, std::size_t vertex_count, int dimension)
 {
   const int f = dimension + 1;
-  // Each chunk of cells counts its own corners per vertex, then fills its own slots of each row
-  // (after those of the chunks before it): every row lists its cells in ascending order, the
-  // sequential loop's list, on any number of workers.
-  std::vector<std::vector<std::size_t>> slot = gatherInChunks<std::vector<std::size_t>> (
-    cells.size (), [&] (std::size_t begin, std::size_t end, std::vector<std::size_t>& count) {
-      count.assign (vertex_count, 0);
-      for (std::size_t c = begin; c < end; ++c)
-        for (int i = 0; i < f; ++i)
-          ++count[static_cast<std::size_t> (cells[c].vertices[i])];
-    });
-  VertexIncidence inc;
-  inc.first.assign (vertex_count + 1, 0);
-  std::size_t total = 0;
-  for (std::size_t v = 0; v < vertex_count; ++v)
-  {
-    inc.first[v] = total;
-    for (std::vector<std::size_t>& chunk : slot)
-    {
-      const std::size_t n = chunk[v];
-      chunk[v] = total; // from here on: the chunk's next slot in row v
-      total += n;
-    }
-  }
-  inc.first[vertex_count] = total;
-  inc.cells.resize (total);
-  const std::size_t chunks = slot.size ();
-  forEachTask (chunks, [&] (std::size_t k) {
-    std::vector<std::size_t>& next = slot[k];
-    for (std::size_t c = cells.size () * k / chunks; c < cells.size () * (k + 1) / chunks; ++c)
-      for (int i = 0; i < f; ++i)
-        inc.cells[next[static_cast<std::size_t> (cells[c].vertices[i])]++] = static_cast<int> (c);
+  BucketRows rows = bucketInOrder (cells.size (), vertex_count, [&] (std::size_t c, const auto& add) {
+    for (int i = 0; i < f; ++i)
+      add (static_cast<std::size_t> (cells[c].vertices[i]));
   });
+  VertexIncidence inc;
+  inc.first = std::move (rows.first);
+  inc.cells = std::move (rows.items);
   return inc;
 }
 

@@ -5,6 +5,7 @@
 #include "core/merging/segment_assembly.h"
 
 #include "core/flow/cell_groups.h"
+#include "core/support/parallel.h"
 
 #include <pcl_flowseg/common/feature_significance.h>
 
@@ -93,11 +94,10 @@ storeSegments (const MergeGroups& groups, FlowResult& result)
     std::sort (result.segments.back ().maxima.begin (), result.segments.back ().maxima.end ());
   }
   std::vector<int> segment_of_cell (result.cells.size ());
-  for (std::size_t c = 0; c < result.cells.size (); ++c)
-  {
+  parallelFor (result.cells.size (), [&] (std::size_t c) {
     result.cells[c].segment = rank[static_cast<std::size_t> (groups.of_cell[c])];
     segment_of_cell[c] = result.cells[c].segment;
-  }
+  });
   result.segment_adjacency = highestSharedFacets (result, segment_of_cell);
   result.features = segmentsOnSide (result, result.parameters.features);
 }
