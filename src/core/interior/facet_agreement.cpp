@@ -57,6 +57,11 @@ measureFacetAgreements (const std::vector<Eigen::Vector3d>& vertices, const std:
   std::vector<GreedyCell> measured;
   assignOnHugePages (measured, cells.size ());
   parallelFor (cells.size (), [&] (std::size_t c) {
+    // The neighbours' centres lie all over memory: those of the cell 8 ahead start loading now.
+    if (c + 8 < cells.size ())
+      for (int i = 0; i <= dimension; ++i)
+        if (cells[c + 8].neighbors[i] >= 0)
+          __builtin_prefetch (&centre[static_cast<std::size_t> (cells[c + 8].neighbors[i])]);
     GreedyCell& cell = measured[c];
     cell.neighbors = cells[c].neighbors;
     cell.agreement = {{0.0, 0.0, 0.0, 0.0}};
