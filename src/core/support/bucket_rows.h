@@ -27,32 +27,37 @@ template <class KeysOf>
 BucketRows
 bucketInOrder (std::size_t item_count, std::size_t bucket_count, const KeysOf& keys_of)
 {
-  std::vector<std::vector<std::size_t>> next = gatherInChunks<std::vector<std::size_t>> (
-    item_count, [&] (std::size_t begin, std::size_t end, std::vector<std::size_t>& count) {
-      count.assign (bucket_count, 0);
-      for (std::size_t k = begin; k < end; ++k)
-        keys_of (k, [&] (std::size_t bucket) { ++count[bucket]; });
-    });
+  struct Chunk
+  {
+    std::size_t begin = 0, end = 0;
+    std::vector<std::size_t> next; ///< counts per bucket, then the chunk's next slot in each
+  };
+  std::vector<Chunk> chunks = gatherInChunks<Chunk> (item_count, [&] (std::size_t begin, std::size_t end, Chunk& chunk) {
+    chunk.begin = begin;
+    chunk.end = end;
+    chunk.next.assign (bucket_count, 0);
+    for (std::size_t k = begin; k < end; ++k)
+      keys_of (k, [&] (std::size_t bucket) { ++chunk.next[bucket]; });
+  });
   BucketRows rows;
   rows.first.assign (bucket_count + 1, 0);
   std::size_t total = 0;
   for (std::size_t b = 0; b < bucket_count; ++b)
   {
     rows.first[b] = total;
-    for (std::vector<std::size_t>& chunk : next)
+    for (Chunk& chunk : chunks)
     {
-      const std::size_t count = chunk[b];
-      chunk[b] = total; // from here on: the chunk's next slot in bucket b
+      const std::size_t count = chunk.next[b];
+      chunk.next[b] = total;
       total += count;
     }
   }
   rows.first[bucket_count] = total;
   rows.items.resize (total);
-  const std::size_t chunks = next.size ();
-  forEachTask (chunks, [&] (std::size_t t) {
-    std::vector<std::size_t>& slot = next[t];
-    for (std::size_t k = item_count * t / chunks; k < item_count * (t + 1) / chunks; ++k)
-      keys_of (k, [&] (std::size_t bucket) { rows.items[slot[bucket]++] = static_cast<int> (k); });
+  forEachTask (chunks.size (), [&] (std::size_t t) {
+    Chunk& chunk = chunks[t];
+    for (std::size_t k = chunk.begin; k < chunk.end; ++k)
+      keys_of (k, [&] (std::size_t bucket) { rows.items[chunk.next[bucket]++] = static_cast<int> (k); });
   });
   return rows;
 }
