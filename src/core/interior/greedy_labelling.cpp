@@ -108,9 +108,7 @@ public:
       // start loading the likely next cell and the neighbours before they are needed.
       if (!queue_.empty ())
         __builtin_prefetch (&state_[static_cast<std::size_t> (queue_.top ())]);
-      for (int i = 0; i < f_; ++i)
-        if (state.neighbors[static_cast<std::size_t> (i)] >= 0)
-          __builtin_prefetch (&state_[static_cast<std::size_t> (state.neighbors[static_cast<std::size_t> (i)])]);
+      prefetchNeighbours (c);
       const bool outside = isOutside (state);
       for (int i = 0; i < f_; ++i)
       {
