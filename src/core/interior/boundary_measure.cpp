@@ -4,6 +4,7 @@
  */
 #include "core/interior/boundary_measure.h"
 
+#include "core/support/bucket_rows.h"
 #include "core/support/parallel.h"
 
 #include <algorithm>
@@ -78,29 +79,16 @@ checkCurve (const Facets& edges, std::size_t vertex_count)
   return check;
 }
 
-/** The triangles around each vertex, as compressed rows: triangles of v are around[first[v]..first[v+1]). */
-struct Around
-{
-  std::vector<std::size_t> first;
-  std::vector<int> around;
-};
+/** The triangles around each vertex, as compressed rows: triangles of v are items[first[v]..first[v+1]). */
+using Around = BucketRows;
 
 Around
 trianglesAround (const Facets& triangles, std::size_t vertex_count)
 {
-  Around a;
-  a.first.assign (vertex_count + 1, 0);
-  for (const auto& t : triangles)
-    for (int k = 0; k < 3; ++k)
-      ++a.first[static_cast<std::size_t> (t[k]) + 1];
-  for (std::size_t v = 0; v < vertex_count; ++v)
-    a.first[v + 1] += a.first[v];
-  a.around.resize (a.first.back ());
-  std::vector<std::size_t> fill (a.first.begin (), a.first.end () - 1);
-  for (std::size_t k = 0; k < triangles.size (); ++k)
+  return bucketInOrder (triangles.size (), vertex_count, [&] (std::size_t k, const auto& add) {
     for (int j = 0; j < 3; ++j)
-      a.around[fill[static_cast<std::size_t> (triangles[k][j])]++] = static_cast<int> (k);
-  return a;
+      add (static_cast<std::size_t> (triangles[k][static_cast<std::size_t> (j)]));
+  });
 }
 
 /** The fan of vertex \a v: its edges to each neighbour w (counted where v < w; \a on_bad_edge for
@@ -117,7 +105,7 @@ checkFan (std::size_t v, const Facets& triangles, const Around& a, std::uint8_t&
   parent.resize (m);
   std::iota (parent.begin (), parent.end (), 0);
   for (std::size_t k = 0; k < m; ++k)
-    for (int j : triangles[static_cast<std::size_t> (a.around[a.first[v] + k])])
+    for (int j : triangles[static_cast<std::size_t> (a.items[a.first[v] + k])])
       if (j != static_cast<int> (v))
         ends.emplace_back (j, static_cast<int> (k));
   std::sort (ends.begin (), ends.end ());

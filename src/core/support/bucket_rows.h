@@ -19,8 +19,8 @@ struct BucketRows
   std::vector<int> items;
 };
 
-/** \brief Lists each of \a item_count items in the buckets \a keys_of (item, add) names (add (bucket)
-  * once per bucket, any number of times), every bucket's items in ascending order. Each chunk of
+/** \brief Lists each of \a item_count items in the buckets it belongs to (\a keys_of (item, add)
+  * calls add (bucket) for each of them), every bucket's items in ascending order. Each chunk of
   * items counts its own, then fills its own slots of every bucket (after the chunks before it): the
   * result is the sequential counting sort's on any number of workers. */
 template <class KeysOf>
