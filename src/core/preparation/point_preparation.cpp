@@ -44,45 +44,6 @@ mortonCode (std::uint32_t x, std::uint32_t y, std::uint32_t z)
   return spread (x) | spread (y) << 1 | spread (z) << 2;
 }
 
-/** Renumbers the vertices along a Z-order curve through their bounding box (ties by coordinates):
-  * cells numbered by their vertices (canonical order) are then close in memory when close in
-  * space, whatever the order of the input, and the numbering does not depend on that order. */
-void
-putInSpatialOrder (PreparedPoints& out)
-{
-  const std::size_t n = out.vertices.size ();
-  Eigen::Vector3d lo = out.vertices.front (), hi = out.vertices.front ();
-  for (const auto& v : out.vertices)
-  {
-    lo = lo.cwiseMin (v);
-    hi = hi.cwiseMax (v);
-  }
-  const Eigen::Vector3d extent = (hi - lo).cwiseMax (Eigen::Vector3d::Constant (std::numeric_limits<double>::min ()));
-  std::vector<std::pair<std::uint64_t, int>> keyed (n);
-  parallelFor (n, [&] (std::size_t k) {
-    std::uint32_t q[3];
-    for (int a = 0; a < 3; ++a)
-      q[a] = static_cast<std::uint32_t> (std::min (2097151.0, std::floor ((out.vertices[k][a] - lo[a]) / extent[a] * 2097151.0)));
-    keyed[k] = {mortonCode (q[0], q[1], q[2]), static_cast<int> (k)};
-  });
-  tbb::parallel_sort (keyed.begin (), keyed.end (), [&] (const auto& a, const auto& b) {
-    if (a.first != b.first)
-      return a.first < b.first;
-    return lexLess (out.vertices[static_cast<std::size_t> (a.second)], out.vertices[static_cast<std::size_t> (b.second)]);
-  });
-  std::vector<int> new_index (n);
-  std::vector<Eigen::Vector3d> ordered (n);
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    new_index[static_cast<std::size_t> (keyed[k].second)] = static_cast<int> (k);
-    ordered[k] = out.vertices[static_cast<std::size_t> (keyed[k].second)];
-  }
-  out.vertices.swap (ordered);
-  for (int& v : out.point_to_vertex)
-    if (v >= 0)
-      v = new_index[static_cast<std::size_t> (v)];
-}
-
 /** The finite points of the input, in input order; non-finite ones are counted. */
 std::vector<int>
 finitePoints (const std::vector<Eigen::Vector3d>& points, PreparedPoints& out)
@@ -99,42 +60,55 @@ finitePoints (const std::vector<Eigen::Vector3d>& points, PreparedPoints& out)
   return finite;
 }
 
-/** One vertex per distinct finite point, in first-seen order: every copy maps to the first copy
-  * in input order (found by sorting by coordinates). */
-void
-mergeDuplicates (const std::vector<Eigen::Vector3d>& points, const std::vector<int>& finite, PreparedPoints& out)
+/** The Z-order (Morton) code of each finite point in the bounding box of them all, with its input index. */
+std::vector<std::pair<std::uint64_t, int>>
+mortonKeys (const std::vector<Eigen::Vector3d>& points, const std::vector<int>& finite)
 {
-  std::vector<int> sorted = finite;
-  std::stable_sort (sorted.begin (), sorted.end (), [&] (int a, int b) {
-    return lexLess (points[static_cast<std::size_t> (a)], points[static_cast<std::size_t> (b)]);
-  });
-  std::vector<int> representative (points.size (), -1);
-  for (std::size_t k = 0; k < sorted.size ();)
-  {
-    std::size_t e = k + 1;
-    while (e < sorted.size () && points[static_cast<std::size_t> (sorted[e])] == points[static_cast<std::size_t> (sorted[k])])
-      ++e;
-    for (std::size_t j = k; j < e; ++j)
-      representative[static_cast<std::size_t> (sorted[j])] = sorted[k]; // stable: the first copy
-    k = e;
-  }
+  Eigen::Vector3d lo = points[static_cast<std::size_t> (finite.front ())], hi = lo;
   for (int i : finite)
   {
-    const int rep = representative[static_cast<std::size_t> (i)];
-    if (rep == i)
-    {
-      out.point_to_vertex[static_cast<std::size_t> (i)] = static_cast<int> (out.vertices.size ());
-      out.vertices.push_back (points[static_cast<std::size_t> (i)]);
-    }
-    else
-    {
-      out.point_to_vertex[static_cast<std::size_t> (i)] = out.point_to_vertex[static_cast<std::size_t> (rep)];
+    lo = lo.cwiseMin (points[static_cast<std::size_t> (i)]);
+    hi = hi.cwiseMax (points[static_cast<std::size_t> (i)]);
+  }
+  const Eigen::Vector3d extent = (hi - lo).cwiseMax (Eigen::Vector3d::Constant (std::numeric_limits<double>::min ()));
+  std::vector<std::pair<std::uint64_t, int>> keyed (finite.size ());
+  parallelFor (finite.size (), [&] (std::size_t k) {
+    const Eigen::Vector3d& p = points[static_cast<std::size_t> (finite[k])];
+    std::uint32_t q[3];
+    for (int a = 0; a < 3; ++a)
+      q[a] = static_cast<std::uint32_t> (std::min (2097151.0, std::floor ((p[a] - lo[a]) / extent[a] * 2097151.0)));
+    keyed[k] = {mortonCode (q[0], q[1], q[2]), finite[k]};
+  });
+  return keyed;
+}
+
+/** One vertex per distinct finite point, numbered along a Z-order curve through their bounding
+  * box (ties by coordinates): cells numbered by their vertices (canonical order) are then close in
+  * memory when close in space, and the numbering does not depend on the input's order. Copies of a
+  * point map to its vertex; one sort (copies last by input index) finds both. */
+void
+mergeDuplicatesInSpatialOrder (const std::vector<Eigen::Vector3d>& points, const std::vector<int>& finite, PreparedPoints& out)
+{
+  std::vector<std::pair<std::uint64_t, int>> keyed = mortonKeys (points, finite);
+  tbb::parallel_sort (keyed.begin (), keyed.end (), [&] (const auto& a, const auto& b) {
+    if (a.first != b.first)
+      return a.first < b.first;
+    const Eigen::Vector3d& pa = points[static_cast<std::size_t> (a.second)];
+    const Eigen::Vector3d& pb = points[static_cast<std::size_t> (b.second)];
+    return pa != pb ? lexLess (pa, pb) : a.second < b.second;
+  });
+  out.vertices.reserve (keyed.size ());
+  for (std::size_t k = 0; k < keyed.size (); ++k)
+  {
+    const std::size_t i = static_cast<std::size_t> (keyed[k].second);
+    if (k > 0 && points[i] == points[static_cast<std::size_t> (keyed[k - 1].second)])
       ++out.duplicates;
-    }
+    else
+      out.vertices.push_back (points[i]);
+    out.point_to_vertex[i] = static_cast<int> (out.vertices.size ()) - 1;
   }
 }
 
-/** The best-fit plane of the vertices and how flat they are. */
 struct PlaneFit
 {
   Eigen::Vector3d mean, normal, axis_u, axis_v;
@@ -223,10 +197,9 @@ preparePoints (const std::vector<Eigen::Vector3d>& points, const PreparationPara
     warnings.push_back (std::to_string (out.non_finite) + " point(s) with NaN/Inf coordinates skipped (label kNoSegment)");
   if (finite.empty ())
     return Status::error (points.empty () ? "the input cloud is empty" : "the input cloud has no finite point");
-  mergeDuplicates (points, finite, out);
+  mergeDuplicatesInSpatialOrder (points, finite, out);
   if (out.duplicates > 0)
     warnings.push_back (std::to_string (out.duplicates) + " duplicate point(s) share the vertex (and label) of their first copy");
-  putInSpatialOrder (out);
   const PlaneFit fit = fitPlane (out.vertices);
   out.thickness = fit.constant_axis >= 0 ? 0.0 : fit.thickness;
   out.dimension = chooseDimension (params, fit, warnings);
