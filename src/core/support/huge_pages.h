@@ -19,10 +19,11 @@ namespace core {
 /** \brief Asks the kernel to back the 2 MiB-aligned part of [data, data + bytes) with transparent
   * huge pages (Linux, THP in "madvise" mode). Must come before the memory is first written. The
   * first write to each 4 KiB page otherwise costs a page fault, which on virtual machines can cost
-  * more than the work done on the memory. Arrays above kLargestHugePageArray are left on small
-  * pages: on virtual machines the first touch of fresh huge pages can cost far more than that of
-  * small ones (the figures are in docs/method.md, "The figures behind the constants"). */
-constexpr std::size_t kLargestHugePageArray = std::size_t (32) << 20;
+  * more than the work done on the memory. Arrays above kLargestHugePageArray (larger than any
+  * per-cell array up to a few million points) are left on small pages. On one development machine
+  * fresh huge pages cost more than small ones at 1M points, on the next far less: the figures and
+  * the choice are in docs/method.md, "The figures behind the constants". */
+constexpr std::size_t kLargestHugePageArray = std::size_t (4) << 30;
 
 inline void
 adviseHugePages (const void* data, std::size_t bytes)
