@@ -6,6 +6,7 @@
 
 #include "core/flow/cell_groups.h"
 #include "core/geometry/cell_geometry.h"
+#include "core/support/huge_pages.h"
 
 #include <limits>
 
@@ -26,7 +27,8 @@ describeManifolds (const StableManifolds& sm, FlowResult& result)
     result.maxima.push_back (m);
   }
   const int count = static_cast<int> (sm.maxima_cells.size ()) + (sm.has_infinity ? 1 : 0);
-  std::vector<int> manifold_of_cell (result.cells.size ());
+  std::vector<int> manifold_of_cell;
+  assignOnHugePages (manifold_of_cell, result.cells.size ());
   for (std::size_t c = 0; c < result.cells.size (); ++c)
     manifold_of_cell[c] = result.cells[c].manifold;
   result.manifolds = summariseCells (result.cells, manifold_of_cell, count);

@@ -5,6 +5,7 @@
 #include "core/merging/segment_assembly.h"
 
 #include "core/flow/cell_groups.h"
+#include "core/support/huge_pages.h"
 #include "core/support/parallel.h"
 
 #include <pcl_flowseg/common/feature_significance.h>
@@ -93,7 +94,8 @@ storeSegments (const MergeGroups& groups, FlowResult& result)
     result.segments.push_back (std::move (segs[static_cast<std::size_t> (order[static_cast<std::size_t> (r)])]));
     std::sort (result.segments.back ().maxima.begin (), result.segments.back ().maxima.end ());
   }
-  std::vector<int> segment_of_cell (result.cells.size ());
+  std::vector<int> segment_of_cell;
+  assignOnHugePages (segment_of_cell, result.cells.size ());
   parallelFor (result.cells.size (), [&] (std::size_t c) {
     result.cells[c].segment = rank[static_cast<std::size_t> (groups.of_cell[c])];
     segment_of_cell[c] = result.cells[c].segment;

@@ -5,6 +5,7 @@
 #include "core/merging/side_flooding.h"
 
 #include "core/geometry/cell_geometry.h"
+#include "core/support/huge_pages.h"
 #include "core/support/parallel.h"
 
 #include <queue>
@@ -106,7 +107,7 @@ assignCellsToTheirSide (const FlowResult& result, MergeGroups& groups)
 {
   const bool sided = result.interior.computed;
   const std::size_t n = result.cells.size ();
-  groups.of_cell.assign (n, -1);
+  assignOnHugePages (groups.of_cell, n, -1);
   parallelFor (n, [&] (std::size_t c) {
     const int group = groups.of_manifold[static_cast<std::size_t> (result.cells[c].manifold)];
     if (!sided || groups.side[static_cast<std::size_t> (group)] == result.cells[c].inside)

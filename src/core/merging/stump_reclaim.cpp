@@ -5,6 +5,7 @@
 #include "core/merging/stump_reclaim.h"
 
 #include "core/flow/cell_groups.h"
+#include "core/support/huge_pages.h"
 #include "core/support/parallel.h"
 
 #include <algorithm>
@@ -47,8 +48,10 @@ class StumpFlood
 {
 public:
   StumpFlood (const FlowResult& result, const std::vector<double>& height, double ratio, const std::vector<int>& of_cell)
-    : result_ (result), height_ (height), ratio2_ (ratio * ratio), original_ (of_cell), fixed_ (result.cells.size (), 0)
+    : result_ (result), height_ (height), ratio2_ (ratio * ratio), fixed_ (result.cells.size (), 0)
   {
+    assignOnHugePages (original_, of_cell.size ());
+    parallelFor (of_cell.size (), [&] (std::size_t c) { original_[c] = of_cell[c]; });
     for (const FlowSegment& man : result.manifolds)
       if (!man.flows_to_infinity && man.maximum.cell >= 0)
         fixed_[static_cast<std::size_t> (man.maximum.cell)] = 1; // segments keep their maxima's cells
@@ -142,7 +145,7 @@ private:
   const FlowResult& result_;
   const std::vector<double>& height_;
   const double ratio2_;
-  const std::vector<int> original_; ///< the groups before the flood
+  std::vector<int> original_; ///< the groups before the flood
   std::vector<char> fixed_;
   std::unordered_map<std::uint64_t, double> saddle_; ///< (a < b) -> squared radius of their saddle
 };

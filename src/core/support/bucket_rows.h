@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include "core/support/huge_pages.h"
 #include "core/support/parallel.h"
 
 #include <cstddef>
@@ -53,7 +54,7 @@ bucketInOrder (std::size_t item_count, std::size_t bucket_count, const KeysOf& k
     }
   }
   rows.first[bucket_count] = total;
-  rows.items.resize (total);
+  assignOnHugePages (rows.items, total);
   forEachTask (chunks.size (), [&] (std::size_t t) {
     Chunk& chunk = chunks[t];
     for (std::size_t k = chunk.begin; k < chunk.end; ++k)
