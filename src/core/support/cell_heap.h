@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include "core/support/huge_pages.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <vector>
@@ -20,7 +22,7 @@ class CellHeap
 {
 public:
   /** A heap for cells 0 .. \a cell_count - 1. */
-  explicit CellHeap (std::size_t cell_count) : position_ (cell_count, -1) {}
+  explicit CellHeap (std::size_t cell_count) { assignOnHugePages (position_, cell_count, -1); }
 
   bool empty () const { return heap_.empty (); }
 
