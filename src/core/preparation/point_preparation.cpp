@@ -109,6 +109,7 @@ mergeDuplicatesInSpatialOrder (const std::vector<Eigen::Vector3d>& points, const
   }
 }
 
+/** The best-fit plane of the vertices and how flat they are. */
 struct PlaneFit
 {
   Eigen::Vector3d mean, normal, axis_u, axis_v;

@@ -18,8 +18,9 @@ namespace core {
 /** \brief Input points reduced to distinct finite vertices, and the frame they are triangulated in. */
 struct PreparedPoints
 {
-  /** Distinct finite points, in Z-order through their bounding box; in 2D without a constant axis, projected
-    * onto the best-fit plane so that 3D and plane coordinates describe the same geometry. */
+  /** Distinct finite points, in Z-order through their bounding box; in 2D without a constant
+    * axis, projected onto the best-fit plane so that 3D and plane coordinates describe the same
+    * geometry. */
   std::vector<Eigen::Vector3d> vertices;
   std::vector<int> point_to_vertex;        ///< per input point: vertex index, or -1 (not finite)
   std::size_t non_finite = 0;
