@@ -17,8 +17,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <unistd.h>
@@ -223,6 +225,59 @@ TEST (InteriorEdges, EveryEdgeOfTheInteriorCellsOnceInOrderOnAnyThreads)
           ASSERT_EQ (edges.length[e], (r.vertices[v] - r.vertices[static_cast<std::size_t> (edges.to[e])]).norm ());
         }
     }
+}
+
+TEST (InteriorEdges, ShortestPathsEqualRelaxingEveryEdgeUntilNothingChanges)
+{
+  // Random graphs with unreachable parts, several seeds with their own start distances: the
+  // search's distances are exactly the fixed point of relaxing every edge (Bellman-Ford), which
+  // takes the same sums whatever the order.
+  std::mt19937 random (7);
+  for (int round = 0; round < 20; ++round)
+  {
+    const int n = 40 + round * 10;
+    std::uniform_int_distribution<int> vertex (0, n - 1);
+    std::uniform_real_distribution<double> length (0.1, 2.0);
+    std::vector<std::vector<std::pair<int, double>>> out (static_cast<std::size_t> (n));
+    for (int k = 0; k < 3 * n; ++k)
+    {
+      const int a = vertex (random) % (n - 5), b = vertex (random) % (n - 5); // the last 5 stay unreached
+      if (a != b)
+        out[static_cast<std::size_t> (a)].emplace_back (b, length (random));
+    }
+    InteriorEdges edges = InteriorEdges (FlowResult ());
+    edges.first.assign (1, 0);
+    for (const auto& row : out)
+    {
+      for (const auto& [to, l] : row)
+      {
+        edges.to.push_back (to);
+        edges.length.push_back (l);
+      }
+      edges.first.push_back (edges.to.size ());
+    }
+    const std::vector<std::pair<int, double>> seeds = {{0, 0.0}, {n / 3, 0.5}, {n / 2, 1.25}}; // distinct vertices
+    std::vector<double> expected (static_cast<std::size_t> (n), std::numeric_limits<double>::infinity ());
+    for (const auto& [v, d] : seeds)
+      expected[static_cast<std::size_t> (v)] = std::min (expected[static_cast<std::size_t> (v)], d);
+    for (bool changed = true; changed;)
+    {
+      changed = false;
+      for (std::size_t v = 0; v < out.size (); ++v)
+        for (const auto& [to, l] : out[v])
+          if (expected[v] + l < expected[static_cast<std::size_t> (to)])
+          {
+            expected[static_cast<std::size_t> (to)] = expected[v] + l;
+            changed = true;
+          }
+    }
+    std::vector<double> distance (static_cast<std::size_t> (n), -1.0);
+    shortestPaths (edges, seeds, distance);
+    for (int v = 0; v < n; ++v)
+      EXPECT_EQ (distance[static_cast<std::size_t> (v)], expected[static_cast<std::size_t> (v)]) << "round " << round << " vertex " << v;
+    for (int v = n - 5; v < n; ++v)
+      EXPECT_TRUE (std::isinf (distance[static_cast<std::size_t> (v)]));
+  }
 }
 
 TEST (ShapeDescription, BendingABarKeepsItsInnerDistances)

@@ -6,11 +6,13 @@
 
 #include <pcl_flowseg/common/parallel_jobs.h>
 
+#include <boost/graph/detail/d_ary_heap.hpp>
+#include <boost/property_map/property_map.hpp>
+
 #include <algorithm>
 #include <functional>
 #include <limits>
 #include <numeric>
-#include <queue>
 
 namespace pcl_flowseg {
 
@@ -86,27 +88,33 @@ InteriorEdges::InteriorEdges (const FlowResult& result)
 void
 shortestPaths (const InteriorEdges& edges, const std::vector<std::pair<int, double>>& seeds, std::vector<double>& distance)
 {
-  using Entry = std::pair<double, int>;
+  // An addressable 4-ary heap (Boost's, as in its Dijkstra): each vertex waits at most once and a
+  // shorter path moves it up, where a queue of stale copies held several per vertex. The
+  // distances do not depend on the queue: each is the least over the paths through the vertices
+  // settled before it.
+  constexpr std::size_t kNotQueued = static_cast<std::size_t> (-1);
   std::fill (distance.begin (), distance.end (), std::numeric_limits<double>::infinity ());
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  std::vector<std::size_t> index_in_heap (distance.size (), kNotQueued);
+  auto keys = boost::make_iterator_property_map (distance.begin (), boost::typed_identity_property_map<int> ());
+  auto indices = boost::make_iterator_property_map (index_in_heap.begin (), boost::typed_identity_property_map<int> ());
+  boost::d_ary_heap_indirect<int, 4, decltype (indices), decltype (keys), std::less<double>> queue (keys, indices);
   for (const auto& [v, d] : seeds)
-  {
     distance[static_cast<std::size_t> (v)] = d;
-    queue.emplace (d, v);
-  }
+  for (const auto& seed : seeds)
+    if (!queue.contains (seed.first))
+      queue.push (seed.first);
   while (!queue.empty ())
   {
-    const auto [d, v] = queue.top ();
+    const int v = queue.top ();
     queue.pop ();
-    if (d > distance[static_cast<std::size_t> (v)])
-      continue;
+    const double d = distance[static_cast<std::size_t> (v)];
     for (std::size_t e = edges.first[static_cast<std::size_t> (v)]; e < edges.first[static_cast<std::size_t> (v) + 1]; ++e)
     {
       const double through = d + edges.length[e];
       if (through < distance[static_cast<std::size_t> (edges.to[e])])
       {
         distance[static_cast<std::size_t> (edges.to[e])] = through;
-        queue.emplace (through, edges.to[e]);
+        queue.push_or_update (edges.to[e]);
       }
     }
   }
