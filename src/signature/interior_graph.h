@@ -25,8 +25,9 @@ struct InteriorEdges
   explicit InteriorEdges (const FlowResult& result);
 };
 
-/** \brief Shortest paths along \a edges from the \a seeds (vertex, distance at which it starts):
-  * \a distance[v] for every vertex (sized to the vertices), infinity where no path reaches. */
+/** \brief Shortest paths along \a edges from the \a seeds (distinct vertices, each with the
+  * distance at which it starts): \a distance[v] for every vertex (sized to the vertices),
+  * infinity where no path reaches. */
 void
 shortestPaths (const InteriorEdges& edges, const std::vector<std::pair<int, double>>& seeds, std::vector<double>& distance);
 
