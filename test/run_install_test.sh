@@ -32,6 +32,10 @@ fi
 if ldd "$lib" | grep -q libpcl_features; then
   echo "FAILED: libpcl_flowseg.so links pcl_features"; exit 1
 fi
+if ldd "$lib" | grep -q libpcl_io; then
+  echo "FAILED: libpcl_flowseg.so links pcl_io (it opens the plugin with PCL's I/O on first use)"; exit 1
+fi
+test -f "$(dirname "$lib")/libpcl_flowseg_pcl.so" || { echo "FAILED: the plugin libpcl_flowseg_pcl.so is not installed beside the library"; exit 1; }
 # The Python package, when built: importable from its install directory with no library path
 # (its RPATH finds libpcl_flowseg.so), segmenting a shipped sample.
 package=$(find "$work/prefix" -path '*dist-packages/pcl_flowseg/__init__.py' | head -1)

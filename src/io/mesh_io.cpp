@@ -4,13 +4,13 @@
  */
 #include <pcl_flowseg/io/mesh_io.h>
 
+#include "common/pcl_backend.h"
 #include "io/file_extension.h"
 #include "io/ply_header.h"
 #include "io/point_fields.h"
 
 #include <pcl/PolygonMesh.h>
 #include <pcl/common/io.h>
-#include <pcl/io/ply_io.h>
 
 #include <Eigen/Geometry>
 
@@ -136,8 +136,12 @@ loadPly (const std::string& path, TriangleMesh& mesh)
 {
   if (const Status header = detail::checkPlyHeader (path); !header)
     return header;
+  Status loaded;
+  const detail::PclBackend* pcl_io = detail::pclBackend (loaded);
+  if (!pcl_io)
+    return loaded;
   pcl::PolygonMesh poly;
-  if (pcl::io::loadPLYFile (path, poly) < 0)
+  if (pcl_io->load_ply_mesh (path, poly) < 0)
     return Status::error (path + ": not a readable PLY file");
   pcl::PointCloud<pcl::PointXYZ> cloud;
   const Status read = detail::readPointFields (poly.cloud, path, cloud, nullptr);

@@ -4,9 +4,8 @@
  */
 #include "io/pcd_reader.h"
 
+#include "common/pcl_backend.h"
 #include "io/pcd_header.h"
-
-#include <pcl/io/pcd_io.h>
 
 #include <cerrno>
 #include <cmath>
@@ -162,11 +161,15 @@ readPcdFile (const std::string& path, pcl::PCLPointCloud2& blob, Eigen::Vector4f
   origin = Eigen::Vector4f (static_cast<float> (v[0]), static_cast<float> (v[1]), static_cast<float> (v[2]), 0.0f);
   orientation = Eigen::Quaternionf (static_cast<float> (v[3]), static_cast<float> (v[4]), static_cast<float> (v[5]),
                                     static_cast<float> (v[6]));
-  if (h.data == "binary_compressed") // its header passed the same check
+  if (h.data == "binary_compressed") // its header passed the same check; PCL decompresses
   {
     in.close ();
-    return pcl::io::loadPCDFile (path, blob, origin, orientation) < 0 ? Status::error (path + ": not a readable PCD file")
-                                                                       : Status::success ();
+    Status loaded;
+    const PclBackend* pcl_io = pclBackend (loaded);
+    if (!pcl_io)
+      return loaded;
+    return pcl_io->load_pcd (path, blob, origin, orientation) < 0 ? Status::error (path + ": not a readable PCD file")
+                                                                   : Status::success ();
   }
   describeFields (h, blob);
   if (h.data == "ascii")

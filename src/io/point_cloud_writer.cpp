@@ -6,10 +6,10 @@
 
 #include <pcl_flowseg/io/atomic_file.h>
 
+#include "common/pcl_backend.h"
 #include "io/file_extension.h"
 #include "io/output_buffer.h"
 
-#include <pcl/io/pcd_io.h>
 
 #include <cmath>
 
@@ -61,9 +61,12 @@ writeLabelCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZL>&
         out.character (' ').integer (p.label).character ('\n');
       }
     });
+  Status loaded;
+  const detail::PclBackend* pcl_io = detail::pclBackend (loaded);
+  if (!pcl_io)
+    return loaded;
   return writeFileAtomically (path, [&] (const std::string& tmp) {
-    pcl::PCDWriter writer;
-    return writer.writeBinary (tmp, labels) == 0 ? Status::success () : Status::error ("PCD writer failed");
+    return pcl_io->write_pcd_xyzl_binary (tmp, labels) == 0 ? Status::success () : Status::error ("PCD writer failed");
   });
 }
 
@@ -72,10 +75,12 @@ writePointCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZ>& 
 {
   if (detail::lowerExtension (path) != "pcd") // PCD content under another name would be misread later
     return Status::error ("cannot write " + path + ": point clouds are written as PCD, give the file a .pcd name");
+  Status loaded;
+  const detail::PclBackend* pcl_io = detail::pclBackend (loaded);
+  if (!pcl_io)
+    return loaded;
   return writeFileAtomically (path, [&] (const std::string& tmp) {
-    pcl::PCDWriter writer;
-    const int rc = binary ? writer.writeBinary (tmp, cloud) : writer.writeASCII (tmp, cloud, 7);
-    return rc == 0 ? Status::success () : Status::error ("PCD writer failed");
+    return pcl_io->write_pcd_xyz (tmp, cloud, binary) == 0 ? Status::success () : Status::error ("PCD writer failed");
   });
 }
 

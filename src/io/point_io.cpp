@@ -4,6 +4,7 @@
  */
 #include <pcl_flowseg/io/point_io.h>
 
+#include "common/pcl_backend.h"
 #include "io/file_extension.h"
 #include "io/pcd_header.h"
 #include "io/pcd_reader.h"
@@ -12,8 +13,6 @@
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/common/io.h>
-#include <pcl/io/pcd_io.h>
-#include <pcl/io/ply_io.h>
 
 #include <algorithm>
 #include <cctype>
@@ -183,7 +182,11 @@ loadPcdOrPly (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>&
   {
     if (const Status header = detail::checkPlyHeader (path); !header)
       return header;
-    if (pcl::io::loadPLYFile (path, blob) < 0)
+    Status loaded;
+    const detail::PclBackend* pcl_io = detail::pclBackend (loaded);
+    if (!pcl_io)
+      return loaded;
+    if (pcl_io->load_ply_cloud (path, blob) < 0)
       return Status::error (path + ": not a readable PLY file");
   }
   const Status read = detail::readPointFields (blob, path, cloud, &normals);

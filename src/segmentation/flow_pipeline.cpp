@@ -108,14 +108,15 @@ wantsOutlierRemoval (const PreparationParameters& params, const NoiseEstimate& n
 /** When wanted, PCL's StatisticalOutlierRemoval on the vertices (points far from all others), then
   * the vertices still detached from the surface their neighbours sample (outliers near it, which
   * break the big interior balls); counted and warned about. */
-void
+Status
 outlierStage (const Run& run, core::PreparedPoints& prepared)
 {
   FlowResult& result = run.result;
   if (!wantsOutlierRemoval (run.params.preparation, result.noise))
-    return;
+    return Status::success ();
   const auto start = Clock::now ();
-  result.outlier_points = core::removeOutliers (prepared);
+  if (const Status s = core::removeOutliers (prepared, result.outlier_points); !s)
+    return s;
   std::vector<char> keep = core::detachedPoints (prepared.vertices, prepared.dimension);
   for (char& k : keep)
     k = !k;
@@ -124,6 +125,7 @@ outlierStage (const Run& run, core::PreparedPoints& prepared)
     result.warnings.push_back (std::to_string (result.outlier_points) +
                                " isolated or detached point(s) left out as outliers (no segment); --outliers off keeps them");
   result.timings.preparation_ms += millisecondsSince (start);
+  return Status::success ();
 }
 
 /** Smoothing of a 3D sample's vertices before the triangulation (PreparationParameters::smoothing). */
@@ -171,7 +173,8 @@ prepareStage (const Run& run, core::PreparedPoints& prepared)
   result.timings.preparation_ms = millisecondsSince (start);
   run.report ("noise", 0.03);
   noiseStage (prepared, result);
-  outlierStage (run, prepared);
+  if (const Status s = outlierStage (run, prepared); !s)
+    return s;
   smoothingStage (run, prepared);
   hiddenSideStage (run, prepared);
   result.dimension = prepared.dimension;

@@ -4,8 +4,7 @@
  */
 #include "core/preparation/outlier_removal.h"
 
-#include <pcl/filters/statistical_outlier_removal.h>
-#include <pcl/point_types.h>
+#include "common/pcl_backend.h"
 
 #include <algorithm>
 #include <vector>
@@ -17,7 +16,7 @@ namespace {
 
 /** The vertices PCL's filter keeps, as a flag per vertex. */
 std::vector<char>
-keptVertices (const std::vector<Eigen::Vector3d>& vertices)
+keptVertices (const detail::PclBackend& pcl_filters, const std::vector<Eigen::Vector3d>& vertices)
 {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
   cloud->reserve (vertices.size ());
@@ -27,12 +26,8 @@ keptVertices (const std::vector<Eigen::Vector3d>& vertices)
     const Eigen::Vector3d r = v - origin;
     cloud->push_back (pcl::PointXYZ (static_cast<float> (r.x ()), static_cast<float> (r.y ()), static_cast<float> (r.z ())));
   }
-  pcl::StatisticalOutlierRemoval<pcl::PointXYZ> filter;
-  filter.setInputCloud (cloud);
-  filter.setMeanK (kOutlierNeighbours);
-  filter.setStddevMulThresh (kOutlierDeviations);
   pcl::Indices kept;
-  filter.filter (kept);
+  pcl_filters.statistical_outliers (cloud, kOutlierNeighbours, kOutlierDeviations, kept);
   std::vector<char> keep (vertices.size (), 0);
   for (const auto i : kept)
     keep[static_cast<std::size_t> (i)] = 1;
@@ -41,13 +36,19 @@ keptVertices (const std::vector<Eigen::Vector3d>& vertices)
 
 } // namespace
 
-std::size_t
-removeOutliers (PreparedPoints& prepared)
+Status
+removeOutliers (PreparedPoints& prepared, std::size_t& removed_points)
 {
+  removed_points = 0;
   const std::size_t n = prepared.vertices.size ();
   if (n <= static_cast<std::size_t> (kOutlierNeighbours))
-    return 0;
-  return removeVertices (prepared, keptVertices (prepared.vertices));
+    return Status::success ();
+  Status loaded;
+  const detail::PclBackend* pcl_filters = detail::pclBackend (loaded);
+  if (!pcl_filters)
+    return loaded;
+  removed_points = removeVertices (prepared, keptVertices (*pcl_filters, prepared.vertices));
+  return Status::success ();
 }
 
 std::size_t

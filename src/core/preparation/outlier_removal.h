@@ -6,6 +6,8 @@
 
 #include "core/preparation/point_preparation.h"
 
+#include <pcl_flowseg/common/status.h>
+
 #include <cstddef>
 #include <vector>
 
@@ -20,9 +22,10 @@ constexpr double kOutlierDeviations = 3.0;
 
 /** \brief Removes from \a prepared the vertices PCL's StatisticalOutlierRemoval rejects: the vertex
   * list (and the plane coordinates in 2D) shrink, their input points map to -1 (no segment).
-  * Keeps every vertex when fewer than dimension + 2 would remain. Returns the input points left out. */
-std::size_t
-removeOutliers (PreparedPoints& prepared);
+  * Keeps every vertex when fewer than dimension + 2 would remain. Sets \a removed_points to the input
+  * points left out; fails only when PCL's filters cannot be loaded (common/pcl_backend.h). */
+Status
+removeOutliers (PreparedPoints& prepared, std::size_t& removed_points);
 
 /** \brief Removes the vertices whose \a keep flag is 0 (see removeOutliers). */
 std::size_t
