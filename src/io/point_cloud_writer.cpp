@@ -10,7 +10,6 @@
 #include "io/file_extension.h"
 #include "io/output_buffer.h"
 
-
 #include <cmath>
 
 namespace pcl_flowseg {
