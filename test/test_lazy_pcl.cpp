@@ -51,9 +51,14 @@ writeAsciiPly ()
   return path;
 }
 
+/** Reads \a path (then removes it) and expects the four points back. */
 void
-expectThePoints (const pcl::PointCloud<pcl::PointXYZ>& cloud)
+expectThePointsFrom (const std::string& path)
 {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  const auto read = pcl_flowseg::loadPointCloud (path, cloud);
+  std::remove (path.c_str ());
+  ASSERT_TRUE (read.ok) << read.message;
   ASSERT_EQ (cloud.size (), 4u);
   for (std::size_t i = 0; i < 4; ++i)
   {
@@ -68,21 +73,11 @@ expectThePoints (const pcl::PointCloud<pcl::PointXYZ>& cloud)
 TEST (LazyPcl, BinaryPcdLeavesPclIoUnloadedPlyLoadsThePlugin)
 {
   ASSERT_FALSE (isMapped ("libpcl_io")) << "the library links pcl_io again: every process pays for VTK";
-  const std::string pcd = writeBinaryPcd ();
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  const auto read_pcd = pcl_flowseg::loadPointCloud (pcd, cloud);
-  std::remove (pcd.c_str ());
-  ASSERT_TRUE (read_pcd.ok) << read_pcd.message;
-  expectThePoints (cloud);
+  expectThePointsFrom (writeBinaryPcd ());
   EXPECT_FALSE (isMapped ("libpcl_io"));
   EXPECT_FALSE (isMapped ("libpcl_flowseg_pcl"));
 
-  const std::string ply = writeAsciiPly ();
-  pcl::PointCloud<pcl::PointXYZ> from_ply;
-  const auto read_ply = pcl_flowseg::loadPointCloud (ply, from_ply);
-  std::remove (ply.c_str ());
-  ASSERT_TRUE (read_ply.ok) << read_ply.message;
-  expectThePoints (from_ply);
+  expectThePointsFrom (writeAsciiPly ());
   EXPECT_TRUE (isMapped ("libpcl_flowseg_pcl.so"));
   EXPECT_TRUE (isMapped ("libpcl_io"));
 }
