@@ -9,6 +9,7 @@
 #include "core/delaunay/flow_predicate.h"
 #include "core/geometry/cell_geometry.h"
 #include "core/support/cell_heap.h"
+#include "core/support/huge_page_arena.h"
 #include "core/support/parallel.h"
 #include "core/support/system_load.h"
 #include "test_support.h"
@@ -122,14 +123,51 @@ TEST (ParallelCore, ParallelInsertionGivesTheSequentialCells)
   std::vector<FlowCell> sequential, parallel;
   const Status s = core::triangulate3D (points, sequential, core::Insertion::Sequential);
   ASSERT_TRUE (s) << s.message;
+  // The parallel triangulation keeps its cells in the huge-page arena and gives them all back.
+  auto& arena = core::HugePageArena::instance ();
+  const std::size_t mapped_before = arena.mappedBytes (), handed_out_before = arena.handedOutBytes ();
   const Status p = core::triangulate3D (points, parallel, core::Insertion::Parallel);
   ASSERT_TRUE (p) << p.message;
+  EXPECT_GT (arena.handedOutBytes () - handed_out_before, parallel.size () * 64);
+  EXPECT_EQ (arena.mappedBytes (), mapped_before);
   ASSERT_EQ (sequential.size (), parallel.size ());
   for (std::size_t k = 0; k < sequential.size (); ++k)
   {
     ASSERT_EQ (sequential[k].vertices, parallel[k].vertices) << k;
     ASSERT_EQ (sequential[k].neighbors, parallel[k].neighbors) << k;
   }
+}
+
+TEST (HugePageArena, HandsOutAlignedDisjointBlocksAndUnmapsFreedChunks)
+{
+  auto& arena = core::HugePageArena::instance ();
+  const std::size_t mapped_before = arena.mappedBytes ();
+  // Sizes like a CGAL container's growing blocks, from both workers at once, and one block larger
+  // than a chunk.
+  std::vector<std::size_t> sizes;
+  for (std::size_t n = 14; sizes.size () < 600; n += 16)
+    sizes.push_back (n * 72);
+  sizes.push_back (std::size_t (100) << 20);
+  std::vector<char*> blocks (sizes.size ());
+  const core::WorkerThreads two (2);
+  core::parallelFor (sizes.size (), [&] (std::size_t k) {
+    blocks[k] = static_cast<char*> (arena.allocate (sizes[k]));
+    std::fill (blocks[k], blocks[k] + sizes[k], static_cast<char> (k % 128)); // writable, all of it
+  });
+  EXPECT_GT (arena.mappedBytes (), mapped_before);
+  std::vector<std::pair<char*, char*>> ranges;
+  for (std::size_t k = 0; k < sizes.size (); ++k)
+  {
+    EXPECT_EQ (reinterpret_cast<std::uintptr_t> (blocks[k]) % 64, 0u) << k;
+    EXPECT_EQ (blocks[k][sizes[k] - 1], static_cast<char> (k % 128)) << k; // no other block wrote here
+    ranges.emplace_back (blocks[k], blocks[k] + sizes[k]);
+  }
+  std::sort (ranges.begin (), ranges.end ());
+  for (std::size_t k = 1; k < ranges.size (); ++k)
+    EXPECT_LE (ranges[k - 1].second, ranges[k].first) << k;
+  for (std::size_t k = 0; k < sizes.size (); ++k)
+    arena.release (blocks[k], sizes[k]);
+  EXPECT_EQ (arena.mappedBytes (), mapped_before);
 }
 
 TEST (ParallelCore, VertexIncidenceListsEachVertexsCellsInOrderOnAnyThreads)

@@ -6,6 +6,7 @@
 
 #include "core/delaunay/canonical_cells.h"
 #include "core/delaunay/flow_predicate.h"
+#include "core/delaunay/huge_page_cells.h"
 #include "core/support/huge_pages.h"
 #include "core/support/parallel.h"
 #include "core/support/system_load.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <thread>
+#include <type_traits>
 #include <utility>
 
 namespace pcl_flowseg {
@@ -29,13 +31,17 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point3 = Kernel::Point_3;
 
-/** The triangulation type, sequential or (with TBB) parallel. Vertices carry their index. */
+/** The triangulation type, sequential or (with TBB) parallel. Vertices carry their index. The
+  * parallel one keeps its cells and vertices on huge pages (core/delaunay/huge_page_cells.h). */
 template <class Concurrency>
 struct Triangulation3
 {
-  using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>;
-  using CellBase = CGAL::Triangulation_cell_base_with_info_3<
-      int, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+  static constexpr bool kParallel = std::is_same<Concurrency, CGAL::Parallel_tag>::value;
+  template <class Base>
+  using Storage = std::conditional_t<kParallel, OnHugePages<Base>, Base>;
+  using VertexBase = Storage<CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>>;
+  using CellBase = Storage<CGAL::Triangulation_cell_base_with_info_3<
+      int, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>>;
   using DataStructure = CGAL::Triangulation_data_structure_3<VertexBase, CellBase, Concurrency>;
   using Type = CGAL::Delaunay_triangulation_3<Kernel, DataStructure>;
 };
