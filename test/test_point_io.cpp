@@ -25,6 +25,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -456,6 +457,54 @@ TEST (PointIO, PointNormalCloudCarriesNormalsAndViewpoint)
   EXPECT_EQ (cloud.sensor_origin_, Eigen::Vector4f (4, 5, 6, 0));
   EXPECT_FALSE (loadPointCloud (dir.file ("none.pcd"), cloud, has_normals));
   EXPECT_TRUE (cloud.empty ());
+}
+
+TEST (PointIO, PointNormalReadOfPcdAndPlyMatchesThePointsAndNormalsRead)
+{
+  // PCD and PLY go straight into PointNormal; the result must be what the PointXYZ reader with its
+  // normals gives, in every numeric type, with zero normals when a file has only some of them.
+  TempDir dir;
+  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty double x\nproperty double y\n"
+                    "property double z\nproperty float nx\nproperty float ny\nproperty float nz\nend_header\n";
+  const double xyz[2][3] = {{1.5, -2.25, 3.0}, {0.1, 4.0, 1e-3}};
+  const float normal[2][3] = {{0.0f, 0.6f, 0.8f}, {1.0f, 0.0f, 0.0f}};
+  for (int i = 0; i < 2; ++i)
+  {
+    ply.append (reinterpret_cast<const char*> (xyz[i]), sizeof (xyz[i]));
+    ply.append (reinterpret_cast<const char*> (normal[i]), sizeof (normal[i]));
+  }
+  const std::string partial = "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z normal_x\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\n"
+                              "WIDTH 2\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 2\nDATA ascii\n1 2 3 0.5\nnan 0 0 1\n";
+  for (const std::string& path : {dir.write ("n.ply", ply), dir.write ("p.pcd", partial)})
+  {
+    pcl::PointCloud<pcl::PointXYZ> points;
+    std::vector<Eigen::Vector3d> normals;
+    ASSERT_TRUE (loadPointCloud (path, points, normals)) << path;
+    pcl::PointCloud<pcl::PointNormal> cloud;
+    bool has_normals = false;
+    ASSERT_TRUE (loadPointCloud (path, cloud, has_normals)) << path;
+    EXPECT_EQ (has_normals, !normals.empty ()) << path;
+    ASSERT_EQ (cloud.size (), points.size ()) << path;
+    EXPECT_EQ (cloud.is_dense, points.is_dense) << path;
+    EXPECT_EQ (cloud.width, points.width) << path;
+    for (std::size_t i = 0; i < cloud.size (); ++i)
+    {
+      EXPECT_EQ (Eigen::Vector3f (cloud[i].x, cloud[i].y, cloud[i].z).hasNaN (), !std::isfinite (points[i].x)) << path;
+      if (std::isfinite (points[i].x))
+        EXPECT_EQ (cloud[i].getVector3fMap (), points[i].getVector3fMap ()) << path << " " << i;
+      const Eigen::Vector3f expected = has_normals ? Eigen::Vector3f (normals[i].cast<float> ()) : Eigen::Vector3f::Zero ();
+      EXPECT_EQ (cloud[i].getNormalVector3fMap (), expected) << path << " " << i;
+    }
+  }
+  pcl::PointCloud<pcl::PointNormal> cloud;
+  bool has_normals = false;
+  ASSERT_TRUE (loadPointCloud (dir.file ("n.ply"), cloud, has_normals));
+  EXPECT_TRUE (has_normals);
+  EXPECT_EQ (cloud[0].y, -2.25f);
+  EXPECT_EQ (cloud[0].normal_z, 0.8f);
+  ASSERT_TRUE (loadPointCloud (dir.file ("p.pcd"), cloud, has_normals));
+  EXPECT_FALSE (has_normals); // only normal_x: no normals
+  EXPECT_FALSE (cloud.is_dense);
 }
 
 TEST (PointIO, ShapeInputOptionsAreChecked)

@@ -26,5 +26,11 @@ Status
 readPointFields (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud,
                 std::vector<Eigen::Vector3d>* normals);
 
+/** \brief As above, straight into points with normals (zero, and \a has_normals false, when the
+  * file has none): no intermediate cloud to copy. */
+Status
+readPointFields (const pcl::PCLPointCloud2& blob, const std::string& path, pcl::PointCloud<pcl::PointNormal>& cloud,
+                bool& has_normals);
+
 } // namespace detail
 } // namespace pcl_flowseg

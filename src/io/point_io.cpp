@@ -167,33 +167,87 @@ loadObj (const std::string& path, std::istream& in, pcl::PointCloud<pcl::PointXY
   return Status::success ();
 }
 
+/** The records of a PCD (its own reader) or PLY file (PCL's), with a PCD's sensor pose. */
 Status
-loadPcdOrPly (const std::string& path, bool pcd, pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<Eigen::Vector3d>& normals)
+readRecords (const std::string& path, bool pcd, pcl::PCLPointCloud2& blob, Eigen::Vector4f& origin,
+             Eigen::Quaternionf& orientation)
+{
+  origin = Eigen::Vector4f::Zero ();
+  orientation = Eigen::Quaternionf::Identity ();
+  if (pcd)
+    return detail::readPcdFile (path, blob, origin, orientation);
+  if (const Status header = detail::checkPlyHeader (path); !header)
+    return header;
+  Status loaded;
+  const detail::PclBackend* pcl_io = detail::pclBackend (loaded);
+  if (!pcl_io)
+    return loaded;
+  if (pcl_io->load_ply_cloud (path, blob) < 0)
+    return Status::error (path + ": not a readable PLY file");
+  return Status::success ();
+}
+
+/** A PCD or PLY file into \a cloud: points alone, or with \a normals (a vector or the cloud's own
+  * fields, by ReadArgs). */
+template <class PointT, class... ReadArgs>
+Status
+loadPcdOrPly (const std::string& path, bool pcd, pcl::PointCloud<PointT>& cloud, ReadArgs&&... normals)
 {
   pcl::PCLPointCloud2 blob;
-  Eigen::Vector4f origin = Eigen::Vector4f::Zero ();
-  Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity ();
-  if (pcd)
-  {
-    if (const Status read = detail::readPcdFile (path, blob, origin, orientation); !read)
-      return read;
-  }
-  else
-  {
-    if (const Status header = detail::checkPlyHeader (path); !header)
-      return header;
-    Status loaded;
-    const detail::PclBackend* pcl_io = detail::pclBackend (loaded);
-    if (!pcl_io)
-      return loaded;
-    if (pcl_io->load_ply_cloud (path, blob) < 0)
-      return Status::error (path + ": not a readable PLY file");
-  }
-  const Status read = detail::readPointFields (blob, path, cloud, &normals);
-  if (!read)
+  Eigen::Vector4f origin;
+  Eigen::Quaternionf orientation;
+  if (const Status read = readRecords (path, pcd, blob, origin, orientation); !read)
+    return read;
+  if (const Status read = detail::readPointFields (blob, path, cloud, std::forward<ReadArgs> (normals)...); !read)
     return read;
   cloud.sensor_origin_ = origin;
   cloud.sensor_orientation_ = orientation;
+  return Status::success ();
+}
+
+/** An error when \a path has an extension no reader knows or cannot be opened. */
+Status
+checkReadable (const std::string& path)
+{
+  if (!isSupportedPointFile (path))
+    return Status::error (path + ": unknown file type '." + detail::lowerExtension (path) +
+                          "' (expected .pcd, .ply, .xyz, .txt, .csv, .off or .obj)");
+  if (!std::ifstream (path, std::ios::binary))
+    return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
+  return Status::success ();
+}
+
+/** \a read run with its exceptions (out of memory, a reader's own) turned into errors. */
+template <class Read>
+Status
+readGuarded (const std::string& path, Read&& read)
+{
+  try
+  {
+    return read ();
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Status::error (path + ": out of memory while reading");
+  }
+  catch (const std::exception& e)
+  {
+    return Status::error (path + ": " + e.what ());
+  }
+}
+
+/** Width, height and is_dense of a cloud just read; an error when it holds no points. */
+template <class PointT>
+Status
+finishCloud (const std::string& path, pcl::PointCloud<PointT>& cloud)
+{
+  if (cloud.empty ())
+    return Status::error (path + ": contains no points");
+  cloud.width = static_cast<std::uint32_t> (cloud.size ());
+  cloud.height = 1;
+  cloud.is_dense = std::all_of (cloud.begin (), cloud.end (), [] (const PointT& p) {
+    return std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z);
+  });
   return Status::success ();
 }
 
@@ -218,38 +272,19 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, 
 {
   cloud.clear ();
   normals.clear ();
+  if (const Status readable = checkReadable (path); !readable)
+    return readable;
   const std::string ext = detail::lowerExtension (path);
-  if (!isSupportedPointFile (path))
-    return Status::error (path + ": unknown file type '." + ext +
-                          "' (expected .pcd, .ply, .xyz, .txt, .csv, .off or .obj)");
-  std::ifstream in (path, std::ios::binary);
-  if (!in)
-    return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
-
-  Status status;
-  try
-  {
-  if (ext == "pcd" || ext == "ply")
-  {
-    in.close ();
-    status = loadPcdOrPly (path, ext == "pcd", cloud, normals);
-  }
-  else if (ext == "off")
-    status = loadOff (path, in, cloud);
-  else if (ext == "obj")
-    status = loadObj (path, in, cloud);
-  else
-    status = loadText (path, in, cloud, normals);
-  }
-  catch (const std::bad_alloc&)
-  {
-    status = Status::error (path + ": out of memory while reading");
-  }
-  catch (const std::exception& e)
-  {
-    status = Status::error (path + ": " + e.what ());
-  }
-
+  const Status status = readGuarded (path, [&] () -> Status {
+    if (ext == "pcd" || ext == "ply")
+      return loadPcdOrPly (path, ext == "pcd", cloud, &normals);
+    std::ifstream in (path, std::ios::binary);
+    if (ext == "off")
+      return loadOff (path, in, cloud);
+    if (ext == "obj")
+      return loadObj (path, in, cloud);
+    return loadText (path, in, cloud, normals);
+  });
   if (!status.ok)
   {
     cloud.clear ();
@@ -258,20 +293,27 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud, 
   }
   if (normals.size () != cloud.size ())
     normals.clear ();
-  if (cloud.empty ())
-    return Status::error (path + ": contains no points");
-  cloud.width = static_cast<std::uint32_t> (cloud.size ());
-  cloud.height = 1;
-  cloud.is_dense = std::all_of (cloud.begin (), cloud.end (), [] (const pcl::PointXYZ& p) {
-    return std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z);
-  });
-  return Status::success ();
+  return finishCloud (path, cloud);
 }
 
 Status
 loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointNormal>& cloud, bool& has_normals)
 {
   cloud.clear ();
+  has_normals = false;
+  const std::string ext = detail::lowerExtension (path);
+  if ((ext == "pcd" || ext == "ply") && checkReadable (path).ok)
+  {
+    // Straight into the points with normals: no intermediate cloud to fill and copy.
+    const Status status = readGuarded (path, [&] () { return loadPcdOrPly (path, ext == "pcd", cloud, has_normals); });
+    if (!status.ok)
+    {
+      cloud.clear ();
+      has_normals = false;
+      return status;
+    }
+    return finishCloud (path, cloud);
+  }
   pcl::PointCloud<pcl::PointXYZ> xyz;
   std::vector<Eigen::Vector3d> normals;
   const Status loaded = loadPointCloud (path, xyz, normals);
@@ -290,6 +332,9 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointNormal>& clou
     p.normal_y = static_cast<float> (n.y ());
     p.normal_z = static_cast<float> (n.z ());
   }
+  cloud.width = xyz.width;
+  cloud.height = xyz.height;
+  cloud.is_dense = xyz.is_dense;
   cloud.sensor_origin_ = xyz.sensor_origin_;
   cloud.sensor_orientation_ = xyz.sensor_orientation_;
   return Status::success ();
