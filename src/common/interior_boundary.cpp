@@ -17,14 +17,20 @@ boundaryFacets (const FlowResult& r)
   if (!r.interior.computed)
     return out;
   const int d = r.dimension, f = d + 1;
+  auto onBoundary = [&] (const FlowCell& c, int i) {
+    const int nb = c.neighbors[i];
+    return nb < 0 || r.cells[static_cast<std::size_t> (nb)].inside != 1;
+  };
+  // A closed surface through all V vertices has 2V - 4 triangles (a curve V segments): reserved,
+  // so that growing the list does not copy it and touch twice the fresh memory.
+  out.reserve (static_cast<std::size_t> (d - 1) * r.vertices.size ());
   for (const FlowCell& c : r.cells)
   {
     if (c.inside != 1)
       continue;
     for (int i = 0; i < f; ++i)
     {
-      const int nb = c.neighbors[i];
-      if (nb >= 0 && r.cells[static_cast<std::size_t> (nb)].inside == 1)
+      if (!onBoundary (c, i))
         continue;
       std::array<int, 3> t{{c.vertices[(i + 1) % f], c.vertices[(i + 2) % f], d == 3 ? c.vertices[(i + 3) % f] : -1}};
       // Orient away from the cell: the apex must lie behind the facet.
