@@ -134,12 +134,10 @@ loadObj (const std::string& path, std::istream& in, TriangleMesh& mesh)
 Status
 loadPly (const std::string& path, TriangleMesh& mesh)
 {
-  if (const Status header = detail::checkPlyHeader (path); !header)
-    return header;
-  Status loaded;
-  const detail::PclBackend* pcl_io = detail::pclBackend (loaded);
+  Status why;
+  const detail::PclBackend* pcl_io = detail::plyReaderFor (path, why);
   if (!pcl_io)
-    return loaded;
+    return why;
   pcl::PolygonMesh poly;
   if (pcl_io->load_ply_mesh (path, poly) < 0)
     return Status::error (path + ": not a readable PLY file");

@@ -99,5 +99,12 @@ checkPlyHeader (const std::string& path)
   return Status::success ();
 }
 
+const PclBackend*
+plyReaderFor (const std::string& path, Status& why)
+{
+  why = checkPlyHeader (path);
+  return why ? pclBackend (why) : nullptr;
+}
+
 } // namespace detail
 } // namespace pcl_flowseg

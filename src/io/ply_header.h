@@ -6,6 +6,8 @@
 
 #include <pcl_flowseg/common/status.h>
 
+#include "common/pcl_backend.h"
+
 #include <string>
 
 namespace pcl_flowseg {
@@ -19,6 +21,11 @@ namespace detail {
   * claims (a negative count became 51 GB) or stop on an assertion. */
 Status
 checkPlyHeader (const std::string& path);
+
+/** \brief PCL's reader for the PLY file \a path once its header passed checkPlyHeader; null, with
+  * \a why set, when the header fails or the PCL plugin cannot be opened. */
+const PclBackend*
+plyReaderFor (const std::string& path, Status& why);
 
 } // namespace detail
 } // namespace pcl_flowseg

@@ -176,12 +176,10 @@ readRecords (const std::string& path, bool pcd, pcl::PCLPointCloud2& blob, Eigen
   orientation = Eigen::Quaternionf::Identity ();
   if (pcd)
     return detail::readPcdFile (path, blob, origin, orientation);
-  if (const Status header = detail::checkPlyHeader (path); !header)
-    return header;
-  Status loaded;
-  const detail::PclBackend* pcl_io = detail::pclBackend (loaded);
+  Status why;
+  const detail::PclBackend* pcl_io = detail::plyReaderFor (path, why);
   if (!pcl_io)
-    return loaded;
+    return why;
   if (pcl_io->load_ply_cloud (path, blob) < 0)
     return Status::error (path + ": not a readable PLY file");
   return Status::success ();
