@@ -196,15 +196,15 @@ delaunayStage (const Run& run, const core::PreparedPoints& prepared)
   return s;
 }
 
-/** The flow relation (exact predicates), circumradii, volumes and centroids of the cells. */
+/** Circumradii, volumes and centroids of the cells: what the interior reads, on all cores. */
 void
-flowStage (const core::PreparedPoints& prepared, FlowResult& result)
+cellMeasuresStage (const core::PreparedPoints& prepared, FlowResult& result)
 {
   const auto start = Clock::now ();
   if (result.dimension == 2)
-    core::computeFlowRelation2D (prepared.planar, result.cells);
+    core::computeCellMeasures2D (prepared.planar, result.cells);
   else
-    core::computeFlowRelation3D (result.vertices, result.cells);
+    core::computeCellMeasures3D (result.vertices, result.cells);
   const int facets = result.dimension + 1;
   core::parallelFor (result.cells.size (), [&] (std::size_t k) {
     FlowCell& cell = result.cells[k];
@@ -214,6 +214,19 @@ flowStage (const core::PreparedPoints& prepared, FlowResult& result)
     cell.centroid = sum / facets;
   });
   result.timings.flow_ms = millisecondsSince (start);
+}
+
+/** The flow relation (exact predicates): read by the stable manifolds alone, so it runs on their
+  * thread, beside the interior's sequential pass. */
+void
+flowMaskStage (const core::PreparedPoints& prepared, FlowResult& result)
+{
+  const auto start = Clock::now ();
+  if (result.dimension == 2)
+    core::computeFlowMask2D (prepared.planar, result.cells);
+  else
+    core::computeFlowMask3D (result.vertices, result.cells);
+  result.timings.flow_ms += millisecondsSince (start);
 }
 
 /** The strengthened flow, its maxima and stable manifolds; writes cells' manifold and successor. */
@@ -301,11 +314,11 @@ interiorStage (const Run& run, std::vector<core::GreedyCell>&& agreements, doubl
   result.timings.interior_ms = measured_ms + millisecondsSince (start);
 }
 
-/** The stable manifolds and the interior read the same cells and write different fields of them:
-  * they run side by side, after the interior's parallel part (the facet agreements) has had all
-  * cores. Warnings come in stage order whatever the timing. */
+/** The flow relation with the stable manifolds, and the interior, read the same cells and write
+  * different fields of them: they run side by side, after the interior's parallel part (the facet
+  * agreements) has had all cores. Warnings come in stage order whatever the timing. */
 void
-manifoldsAndInteriorStage (const Run& run)
+manifoldsAndInteriorStage (const Run& run, const core::PreparedPoints& prepared)
 {
   run.report (run.params.interior.separate ? "manifolds and interior" : "manifolds", 0.6);
   const InteriorParameters& interior = run.params.interior;
@@ -316,7 +329,10 @@ manifoldsAndInteriorStage (const Run& run)
   const double measured_ms = millisecondsSince (start);
   std::vector<std::string> manifold_warnings;
   const std::size_t earlier_warnings = run.result.warnings.size ();
-  core::runSideBySide ([&] () { manifoldStage (run.result, manifold_warnings); },
+  core::runSideBySide ([&] () {
+                         flowMaskStage (prepared, run.result);
+                         manifoldStage (run.result, manifold_warnings);
+                       },
                        [&] () { interiorStage (run, std::move (agreements), measured_ms); });
   run.result.warnings.insert (run.result.warnings.begin () + static_cast<std::ptrdiff_t> (earlier_warnings),
                               manifold_warnings.begin (), manifold_warnings.end ());
@@ -351,8 +367,8 @@ runStages (const Run& run)
   if (const Status s = delaunayStage (run, prepared); !s)
     return s;
   run.report ("flow", 0.5);
-  flowStage (prepared, run.result);
-  manifoldsAndInteriorStage (run);
+  cellMeasuresStage (prepared, run.result);
+  manifoldsAndInteriorStage (run, prepared);
   mergeAndLabelStages (run.params.merge, run.result, &run);
   run.result.timings.total_ms = millisecondsSince (start);
   run.report ("done", 1.0);

@@ -95,10 +95,12 @@ struct StageTimings
   double preparation_ms = 0.0; ///< finite filter, duplicates, dimension detection
   double noise_ms = 0.0;       ///< the noise estimate
   double delaunay_ms = 0.0;    ///< CGAL triangulation and its conversion to cells in canonical order
-  double flow_ms = 0.0;        ///< flow relation (exact predicates), circumradii, volumes, centroids
+  double flow_ms = 0.0;        ///< flow relation (exact predicates), circumradii, volumes, centroids;
+                               ///< the flow relation runs just before manifolds_ms, on its thread
   double manifolds_ms = 0.0;   ///< strengthened flow, maxima, stable manifolds and their adjacency
   double interior_ms = 0.0;    ///< interior/exterior separation (surface reconstruction); with
-                               ///< more than one thread it runs at the same time as manifolds_ms
+                               ///< more than one thread it runs at the same time as the flow
+                               ///< relation and manifolds_ms
   double merge_ms = 0.0;       ///< rho-merging and segment statistics
   double labels_ms = 0.0;      ///< per-point labels
   double total_ms = 0.0;

@@ -62,17 +62,26 @@ triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>
   return Status::success ();
 }
 
+namespace {
+/** The triangle's corners as CGAL points. */
 void
-computeFlowRelation2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells)
+cornersOf (const std::vector<Eigen::Vector2d>& points, const FlowCell& cell, Point2 (&corners)[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    const Eigen::Vector2d& v = points[static_cast<std::size_t> (cell.vertices[i])];
+    corners[i] = Point2 (v.x (), v.y ());
+  }
+}
+} // namespace
+
+void
+computeFlowMask2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells)
 {
   parallelFor (cells.size (), [&] (std::size_t k) {
     FlowCell& cell = cells[k];
     Point2 p[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      const Eigen::Vector2d& v = points[static_cast<std::size_t> (cell.vertices[i])];
-      p[i] = Point2 (v.x (), v.y ());
-    }
+    cornersOf (points, cell, p);
     cell.flow_mask = 0;
     for (int i = 0; i < 3; ++i)
     {
@@ -81,9 +90,26 @@ computeFlowRelation2D (const std::vector<Eigen::Vector2d>& points, std::vector<F
       if (CGAL::angle (p[(i + 1) % 3], p[i], p[(i + 2) % 3]) == CGAL::OBTUSE)
         cell.flow_mask |= static_cast<std::uint8_t> (1u << i);
     }
+  });
+}
+
+void
+computeCellMeasures2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells)
+{
+  parallelFor (cells.size (), [&] (std::size_t k) {
+    FlowCell& cell = cells[k];
+    Point2 p[3];
+    cornersOf (points, cell, p);
     cell.squared_radius = CGAL::squared_radius (p[0], p[1], p[2]);
     cell.volume = std::abs (CGAL::area (p[0], p[1], p[2]));
   });
+}
+
+void
+computeFlowRelation2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells)
+{
+  computeFlowMask2D (points, cells);
+  computeCellMeasures2D (points, cells);
 }
 
 } // namespace core

@@ -171,7 +171,7 @@ triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>
 }
 
 void
-computeFlowRelation3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells)
+computeFlowMask3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells)
 {
   parallelFor (cells.size (), [&] (std::size_t k) {
     FlowCell& cell = cells[k];
@@ -184,12 +184,30 @@ computeFlowRelation3D (const std::vector<Eigen::Vector3d>& points, std::vector<F
     for (int i = 0; i < 4; ++i)
       if (insideDiametralSphere (*v[(i + 1) % 4], *v[(i + 2) % 4], *v[(i + 3) % 4], *v[i]))
         cell.flow_mask |= static_cast<std::uint8_t> (1u << i);
+  });
+}
+
+void
+computeCellMeasures3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells)
+{
+  parallelFor (cells.size (), [&] (std::size_t k) {
+    FlowCell& cell = cells[k];
     Point3 p[4];
     for (int i = 0; i < 4; ++i)
-      p[i] = Point3 (v[i]->x (), v[i]->y (), v[i]->z ());
+    {
+      const Eigen::Vector3d& v = points[static_cast<std::size_t> (cell.vertices[i])];
+      p[i] = Point3 (v.x (), v.y (), v.z ());
+    }
     cell.squared_radius = CGAL::squared_radius (p[0], p[1], p[2], p[3]);
     cell.volume = std::abs (CGAL::volume (p[0], p[1], p[2], p[3]));
   });
+}
+
+void
+computeFlowRelation3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells)
+{
+  computeFlowMask3D (points, cells);
+  computeCellMeasures3D (points, cells);
 }
 
 } // namespace core

@@ -35,14 +35,30 @@ Status
 triangulate3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells,
                Insertion insertion = Insertion::Automatic);
 
-/** \brief The flow relation of triangles: flow_mask (exact test: a triangle flows across the edge
-  * opposite an obtuse angle), squared_radius and volume (area). Centroids are left for the caller,
-  * who knows the input frame. */
+/** \brief The flow relation of triangles: flow_mask alone (exact test: a triangle flows across the
+  * edge opposite an obtuse angle). */
+void
+computeFlowMask2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells);
+
+/** \brief The measures of triangles: squared_radius and volume (area). */
+void
+computeCellMeasures2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells);
+
+/** \brief Both computeFlowMask2D and computeCellMeasures2D. Centroids are left for the caller, who
+  * knows the input frame. */
 void
 computeFlowRelation2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells);
 
-/** \brief The flow relation of tetrahedra: flow_mask (CGAL's exact side_of_bounded_sphere on each
-  * facet's diametral sphere), squared_radius and volume. */
+/** \brief The flow relation of tetrahedra: flow_mask alone (exact test: v[i] strictly inside the
+  * diametral sphere of the facet opposite it). */
+void
+computeFlowMask3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells);
+
+/** \brief The measures of tetrahedra: squared_radius and volume. */
+void
+computeCellMeasures3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells);
+
+/** \brief Both computeFlowMask3D and computeCellMeasures3D. */
 void
 computeFlowRelation3D (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCell>& cells);
 
