@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "common/flow_options.h"
+#include "common/huge_page_malloc.h"
 #include "common/options.h"
 #include "common/progress.h"
 
@@ -231,6 +232,7 @@ list (const OptionParser& p, const std::vector<std::string>& args, pcl_flowseg::
 int
 main (int argc, char** argv)
 {
+  flowseg_app::relaunchWithHugePageMalloc (argv);
   Options o;
   const OptionParser parser = makeParser (o);
   std::vector<std::string> args;

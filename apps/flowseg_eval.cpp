@@ -4,6 +4,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "common/flow_options.h"
+#include "common/huge_page_malloc.h"
 #include "common/options.h"
 #include "common/progress.h"
 
@@ -255,6 +256,7 @@ evaluate (const OptionParser& p, const std::string& root, const Options& o, cons
 int
 main (int argc, char** argv)
 {
+  flowseg_app::relaunchWithHugePageMalloc (argv);
   Options o;
   const OptionParser parser = makeParser (o);
   std::vector<std::string> roots;

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "common/flow_options.h"
+#include "common/huge_page_malloc.h"
 #include "common/options.h"
 
 #include <pcl_flowseg/signature/shape_signature.h>
@@ -51,6 +52,7 @@ printDescriptionMatch (const pcl::SignatureMatcher::Result& m, const pcl_flowseg
 int
 main (int argc, char** argv)
 {
+  flowseg_app::relaunchWithHugePageMalloc (argv);
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
   pcl_flowseg::MatchParameters match;

@@ -4,6 +4,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "common/flow_options.h"
+#include "common/huge_page_malloc.h"
 #include "common/options.h"
 
 #include <pcl_flowseg/common/feature_significance.h>
@@ -158,6 +159,7 @@ printSummary (const Options& o, const pcl_flowseg::FlowResult& r, double read_ms
 int
 main (int argc, char** argv)
 {
+  flowseg_app::relaunchWithHugePageMalloc (argv);
   Options o;
   const OptionParser parser = makeParser (o);
   std::vector<std::string> inputs;

@@ -4,6 +4,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "common/flow_options.h"
+#include "common/huge_page_malloc.h"
 #include "common/options.h"
 
 #include <pcl_flowseg/io/json_text.h>
@@ -138,6 +139,7 @@ printTable (const std::string& input, const pcl_flowseg::Signature& s)
 int
 main (int argc, char** argv)
 {
+  flowseg_app::relaunchWithHugePageMalloc (argv);
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
   bool json = false;
