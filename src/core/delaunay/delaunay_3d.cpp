@@ -98,6 +98,7 @@ triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCel
   using Delaunay = typename Triangulation3<Concurrency>::Type;
   std::vector<std::pair<Point3, int>> input;
   input.reserve (points.size ());
+  adviseHugePages (input.data (), input.capacity () * sizeof (input[0]));
   for (std::size_t i = 0; i < points.size (); ++i)
     input.emplace_back (Point3 (points[i].x (), points[i].y (), points[i].z ()), static_cast<int> (i));
 

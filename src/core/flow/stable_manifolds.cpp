@@ -93,7 +93,8 @@ public:
       const double hb = cells_[static_cast<std::size_t> (b)].squared_radius;
       return ha != hb ? ha > hb : a < b;
     });
-    std::vector<int> manifold_of_max (cells_.size (), -1);
+    std::vector<int> manifold_of_max;
+    assignOnHugePages (manifold_of_max, cells_.size (), -1);
     for (std::size_t k = 0; k < out.maxima_cells.size (); ++k)
       manifold_of_max[static_cast<std::size_t> (out.maxima_cells[k])] = static_cast<int> (k);
     const int infinity_manifold = static_cast<int> (out.maxima_cells.size ());

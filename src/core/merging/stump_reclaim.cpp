@@ -48,8 +48,9 @@ class StumpFlood
 {
 public:
   StumpFlood (const FlowResult& result, const std::vector<double>& height, double ratio, const std::vector<int>& of_cell)
-    : result_ (result), height_ (height), ratio2_ (ratio * ratio), fixed_ (result.cells.size (), 0)
+    : result_ (result), height_ (height), ratio2_ (ratio * ratio)
   {
+    assignOnHugePages (fixed_, result.cells.size (), char (0));
     assignOnHugePages (original_, of_cell.size ());
     parallelFor (of_cell.size (), [&] (std::size_t c) { original_[c] = of_cell[c]; });
     for (const FlowSegment& man : result.manifolds)
@@ -65,7 +66,8 @@ public:
   run (std::vector<int>& of_cell)
   {
     Queue queue (std::greater<Entry> (), seeds ());
-    std::vector<char> taken (result_.cells.size (), 0);
+    std::vector<char> taken;
+    assignOnHugePages (taken, result_.cells.size (), char (0));
     while (!queue.empty ())
     {
       const Entry e = queue.top ();

@@ -4,6 +4,7 @@
  */
 #include "core/preparation/point_preparation.h"
 
+#include "core/support/huge_pages.h"
 #include "core/support/parallel.h"
 
 #include <tbb/parallel_sort.h>
@@ -50,6 +51,7 @@ finitePoints (const std::vector<Eigen::Vector3d>& points, PreparedPoints& out)
 {
   std::vector<int> finite;
   finite.reserve (points.size ());
+  adviseHugePages (finite.data (), points.size () * sizeof (int));
   for (std::size_t i = 0; i < points.size (); ++i)
   {
     if (points[i].allFinite ())
@@ -71,7 +73,8 @@ mortonKeys (const std::vector<Eigen::Vector3d>& points, const std::vector<int>& 
     hi = hi.cwiseMax (points[static_cast<std::size_t> (i)]);
   }
   const Eigen::Vector3d extent = (hi - lo).cwiseMax (Eigen::Vector3d::Constant (std::numeric_limits<double>::min ()));
-  std::vector<std::pair<std::uint64_t, int>> keyed (finite.size ());
+  std::vector<std::pair<std::uint64_t, int>> keyed;
+  assignOnHugePages (keyed, finite.size ());
   parallelFor (finite.size (), [&] (std::size_t k) {
     const Eigen::Vector3d& p = points[static_cast<std::size_t> (finite[k])];
     std::uint32_t q[3];
@@ -98,6 +101,7 @@ mergeDuplicatesInSpatialOrder (const std::vector<Eigen::Vector3d>& points, const
     return pa != pb ? lexLess (pa, pb) : a.second < b.second;
   });
   out.vertices.reserve (keyed.size ());
+  adviseHugePages (out.vertices.data (), keyed.size () * sizeof (Eigen::Vector3d));
   for (std::size_t k = 0; k < keyed.size (); ++k)
   {
     const std::size_t i = static_cast<std::size_t> (keyed[k].second);
@@ -192,7 +196,7 @@ preparePoints (const std::vector<Eigen::Vector3d>& points, const PreparationPara
                PreparedPoints& out, std::vector<std::string>& warnings)
 {
   out = PreparedPoints ();
-  out.point_to_vertex.assign (points.size (), -1);
+  assignOnHugePages (out.point_to_vertex, points.size (), -1);
   const std::vector<int> finite = finitePoints (points, out);
   if (out.non_finite > 0)
     warnings.push_back (std::to_string (out.non_finite) + " point(s) with NaN/Inf coordinates skipped (label kNoSegment)");
