@@ -63,25 +63,27 @@ triangulate2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>
 }
 
 namespace {
-/** The triangle's corners as CGAL points. */
+/** Calls \a body (cell, corners) for every triangle, its corners as CGAL points, on all cores. */
+template <class Body>
 void
-cornersOf (const std::vector<Eigen::Vector2d>& points, const FlowCell& cell, Point2 (&corners)[3])
+forEachTriangle (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells, const Body& body)
 {
-  for (int i = 0; i < 3; ++i)
-  {
-    const Eigen::Vector2d& v = points[static_cast<std::size_t> (cell.vertices[i])];
-    corners[i] = Point2 (v.x (), v.y ());
-  }
+  parallelFor (cells.size (), [&] (std::size_t k) {
+    Point2 p[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      const Eigen::Vector2d& v = points[static_cast<std::size_t> (cells[k].vertices[i])];
+      p[i] = Point2 (v.x (), v.y ());
+    }
+    body (cells[k], p);
+  });
 }
 } // namespace
 
 void
 computeFlowMask2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells)
 {
-  parallelFor (cells.size (), [&] (std::size_t k) {
-    FlowCell& cell = cells[k];
-    Point2 p[3];
-    cornersOf (points, cell, p);
+  forEachTriangle (points, cells, [] (FlowCell& cell, const Point2 (&p)[3]) {
     cell.flow_mask = 0;
     for (int i = 0; i < 3; ++i)
     {
@@ -96,10 +98,7 @@ computeFlowMask2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowC
 void
 computeCellMeasures2D (const std::vector<Eigen::Vector2d>& points, std::vector<FlowCell>& cells)
 {
-  parallelFor (cells.size (), [&] (std::size_t k) {
-    FlowCell& cell = cells[k];
-    Point2 p[3];
-    cornersOf (points, cell, p);
+  forEachTriangle (points, cells, [] (FlowCell& cell, const Point2 (&p)[3]) {
     cell.squared_radius = CGAL::squared_radius (p[0], p[1], p[2]);
     cell.volume = std::abs (CGAL::area (p[0], p[1], p[2]));
   });
