@@ -196,15 +196,25 @@ delaunayStage (const Run& run, const core::PreparedPoints& prepared)
   return s;
 }
 
+/** Calls the 2D form of a per-cell computation on the plane coordinates, or the 3D form on the
+  * vertices, by the run's dimension. */
+void
+onCells (const core::PreparedPoints& prepared, FlowResult& result,
+         void (*planar) (const std::vector<Eigen::Vector2d>&, std::vector<FlowCell>&),
+         void (*spatial) (const std::vector<Eigen::Vector3d>&, std::vector<FlowCell>&))
+{
+  if (result.dimension == 2)
+    planar (prepared.planar, result.cells);
+  else
+    spatial (result.vertices, result.cells);
+}
+
 /** Circumradii, volumes and centroids of the cells: what the interior reads, on all cores. */
 void
 cellMeasuresStage (const core::PreparedPoints& prepared, FlowResult& result)
 {
   const auto start = Clock::now ();
-  if (result.dimension == 2)
-    core::computeCellMeasures2D (prepared.planar, result.cells);
-  else
-    core::computeCellMeasures3D (result.vertices, result.cells);
+  onCells (prepared, result, core::computeCellMeasures2D, core::computeCellMeasures3D);
   const int facets = result.dimension + 1;
   core::parallelFor (result.cells.size (), [&] (std::size_t k) {
     FlowCell& cell = result.cells[k];
@@ -222,10 +232,7 @@ void
 flowMaskStage (const core::PreparedPoints& prepared, FlowResult& result)
 {
   const auto start = Clock::now ();
-  if (result.dimension == 2)
-    core::computeFlowMask2D (prepared.planar, result.cells);
-  else
-    core::computeFlowMask3D (result.vertices, result.cells);
+  onCells (prepared, result, core::computeFlowMask2D, core::computeFlowMask3D);
   result.timings.flow_ms += millisecondsSince (start);
 }
 
