@@ -54,8 +54,7 @@ std::vector<CellLinks>
 extractLinks (Delaunay& dt)
 {
   std::vector<typename Delaunay::Cell_handle> handles;
-  handles.reserve (dt.number_of_finite_cells ());
-  adviseHugePages (handles.data (), handles.capacity () * sizeof (handles[0]));
+  reserveOnHugePages (handles, dt.number_of_finite_cells ());
   // Every cell numbered, the infinite ones kInfiniteCell: a neighbour's number then says whether
   // it is infinite, without visiting its vertices.
   for (auto c = dt.all_cells_begin (); c != dt.all_cells_end (); ++c)
@@ -97,8 +96,7 @@ triangulateWith (const std::vector<Eigen::Vector3d>& points, std::vector<FlowCel
 {
   using Delaunay = typename Triangulation3<Concurrency>::Type;
   std::vector<std::pair<Point3, int>> input;
-  input.reserve (points.size ());
-  adviseHugePages (input.data (), input.capacity () * sizeof (input[0]));
+  reserveOnHugePages (input, points.size ());
   for (std::size_t i = 0; i < points.size (); ++i)
     input.emplace_back (Point3 (points[i].x (), points[i].y (), points[i].z ()), static_cast<int> (i));
 

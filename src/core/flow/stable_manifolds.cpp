@@ -38,8 +38,7 @@ public:
   resolveInFlowOrder ()
   {
     std::vector<int> ready;
-    ready.reserve (cells_.size ());
-    adviseHugePages (ready.data (), cells_.size () * sizeof (int));
+    reserveOnHugePages (ready, cells_.size ());
     for (std::size_t c = 0; c < cells_.size (); ++c)
     {
       for (int i = 0; i < facets_; ++i)

@@ -50,8 +50,7 @@ std::vector<int>
 finitePoints (const std::vector<Eigen::Vector3d>& points, PreparedPoints& out)
 {
   std::vector<int> finite;
-  finite.reserve (points.size ());
-  adviseHugePages (finite.data (), points.size () * sizeof (int));
+  reserveOnHugePages (finite, points.size ());
   for (std::size_t i = 0; i < points.size (); ++i)
   {
     if (points[i].allFinite ())
@@ -100,8 +99,7 @@ mergeDuplicatesInSpatialOrder (const std::vector<Eigen::Vector3d>& points, const
     const Eigen::Vector3d& pb = points[static_cast<std::size_t> (b.second)];
     return pa != pb ? lexLess (pa, pb) : a.second < b.second;
   });
-  out.vertices.reserve (keyed.size ());
-  adviseHugePages (out.vertices.data (), keyed.size () * sizeof (Eigen::Vector3d));
+  reserveOnHugePages (out.vertices, keyed.size ());
   for (std::size_t k = 0; k < keyed.size (); ++k)
   {
     const std::size_t i = static_cast<std::size_t> (keyed[k].second);

@@ -66,6 +66,16 @@ populateInParallel (const void* data, std::size_t bytes)
 #endif
 }
 
+/** \brief Room for \a n elements in the empty \a v, advised onto huge pages before anything is
+  * written there: for arrays filled by push_back. */
+template <class T>
+void
+reserveOnHugePages (std::vector<T>& v, std::size_t n)
+{
+  v.reserve (n);
+  adviseHugePages (v.data (), v.capacity () * sizeof (T));
+}
+
 /** \brief \a v resized to \a n copies of \a value, its new storage advised onto huge pages and
   * mapped on all workers first. */
 template <class T>
