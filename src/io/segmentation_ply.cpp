@@ -155,9 +155,10 @@ writeSurfacePly (const std::string& path, const FlowResult& r, bool binary)
   if (!r.interior.computed)
     return Status::error ("cannot write " + path + ": no interior/exterior separation was run");
   const auto facets = boundaryFacets (r);
-  std::size_t inside_cells = 0;
-  for (const FlowCell& c : r.cells)
-    inside_cells += c.inside == 1;
+  std::size_t inside_cells = 0; // the faces of a 2D surface (one pass over all cells: not in 3D)
+  if (r.dimension == 2)
+    for (const FlowCell& c : r.cells)
+      inside_cells += c.inside == 1;
   return writeTextFileAtomically (path, [&] (std::ostream& out) {
     PlyValues ply (out, binary);
     ply.buffer ().text ("ply\n").text (plyFormat (binary))
