@@ -3,7 +3,7 @@
  * bare CGAL Delaunay triangulation of the same points.
  *
  * For each input (the paper's HORSE: the vertices of horse.off; procedural shapes of growing size),
- * in --repeat rounds, each a pair of fresh processes run one after the other, in alternating order:
+ * in --repeat rounds of fresh processes run one after the other, in alternating order:
  *   - the bare floor: a plain CGAL Delaunay_triangulation_3 of the points, sequential, in a process
  *     of its own (this benchmark, run with --bare-child), on the default malloc;
  *   - the whole flowseg_segment process (built beside this benchmark) on the points written as a
@@ -223,6 +223,9 @@ public:
     return pclose (child) == 0 && got == 3;
   }
 
+  /** Whether flowseg_segment was found beside this benchmark and both input files written. */
+  bool ready () const { return !app_command_.empty () && !bare_command_.empty (); }
+
   /** One whole flowseg_segment process: its wall ms and the timings of its JSON; false when it failed. */
   bool
   segment (double& ms, pcl_flowseg::StageTimings& stages) const
@@ -290,6 +293,11 @@ struct RoundRatios
 bool
 measureRounds (const Processes& processes, int repeat, Measurement& m)
 {
+  if (!processes.ready ())
+  {
+    std::snprintf (m.error, sizeof (m.error), "flowseg_segment not found beside this benchmark (build the apps), or /tmp not writable");
+    return false;
+  }
   RoundRatios ratios;
   for (int r = 0; r < repeat; ++r)
   {
