@@ -49,7 +49,7 @@ makeParser (Options& o)
   p.count ("--candidates", "N", "query: compare in full the N stored shapes whose summaries are\nnearest; 0 = every stored shape; the rest are listed after them\nby summary distance, similarity \"-\"",
            o.candidates, 0, 1000000000);
   p.text ("--label", "L", "add: class of the added shapes (default: their folder name)", o.label);
-  flowseg_app::addMergeOptions (p, o.params.merge);
+  flowseg_app::addSegmentationOptions (p, o.params);
   flowseg_app::addSignatureOptions (p, o.signature);
   flowseg_app::addMatchMethodOption (p, o.match);
   flowseg_app::addMatchOptions (p, o.match);

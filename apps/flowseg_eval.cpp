@@ -70,7 +70,7 @@ makeParser (Options& o)
                   "distribution on the same points), esf (PCL's Ensemble of Shape Functions).");
   p.text ("-o, --output", "DIR", "output folder (created), required", o.output);
   p.text ("--methods", "LIST", "comma-separated, any of the methods above", o.methods);
-  flowseg_app::addMergeOptions (p, o.params.merge);
+  flowseg_app::addSegmentationOptions (p, o.params);
   flowseg_app::addSignatureOptions (p, o.signature);
   flowseg_app::addMatchOptions (p, o.match);
   flowseg_app::addThreadsOption (p, o.threads);

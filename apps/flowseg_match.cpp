@@ -62,7 +62,7 @@ main (int argc, char** argv)
                                "A's; with the other methods the distance (similarity = exp(-distance)) and each component's.");
   flowseg_app::addMatchMethodOption (p, match);
   flowseg_app::addMatchOptions (p, match);
-  flowseg_app::addMergeOptions (p, params.merge);
+  flowseg_app::addSegmentationOptions (p, params);
   flowseg_app::addSignatureOptions (p, signature);
   flowseg_app::addThreadsOption (p, params.execution.threads);
   p.epilogue ("Exit status: 0 success, 1 unreadable or unsegmentable input, 2 bad options.");

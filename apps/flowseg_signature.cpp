@@ -149,7 +149,7 @@ main (int argc, char** argv)
                                "description: the parts (volume share, thickness, extent, axis ratios, remoteness: mean inner\n"
                                "distance from the shape's sources, in the same unit) and the thickness, inner- and\n"
                                "solid-distance distributions (32 bins each).");
-  flowseg_app::addMergeOptions (p, params.merge);
+  flowseg_app::addSegmentationOptions (p, params);
   flowseg_app::addSignatureOptions (p, signature);
   flowseg_app::addThreadsOption (p, params.execution.threads);
   p.flag ("--json", "print JSON instead of a table", json);

@@ -178,7 +178,7 @@ done
 expect "segment threads absurd" 2 "threads needs a whole number" -- "$seg" "$src/samples/star2d.pcd" -j -1
 expect "segment option with a value it does not take" 2 "takes no value" -- "$seg" "$src/samples/star2d.pcd" --binary=yes
 for app in flowseg_segment flowseg_db flowseg_eval flowseg_signature flowseg_match; do
-  "$build/apps/$app" --help | grep -q -- "-j, --threads N        worker threads: 0 = all cores, 1 = sequential (default 0)"
+  "$build/apps/$app" --help | grep -q -- "-j, --threads N        worker threads: 0 = all cores, 1 = sequential; the result is the same for"
   check "$app documents -j, --threads the same way" $?
 done
 expect "db build" 0 "9 shapes" -- "$db" build "$work/shapes.db" "$work/tree" -j 2

@@ -4,103 +4,146 @@
  */
 #include "common/flow_options.h"
 
+#include <pcl_flowseg/common/flow_parameter_table.h>
+
+#include <iostream>
 #include <limits>
+#include <memory>
+#include <stdexcept>
 
 namespace flowseg_app {
 
 namespace {
-/** A check of one merge value by the library's own rule (the other values at their defaults). */
-std::function<pcl_flowseg::Status (double)>
-mergeCheck (double pcl_flowseg::MergeParameters::*field)
+
+/** The value's name in the help for a row of \a info's type. */
+std::string
+valueName (const pcl_flowseg::ParameterInfo& info)
 {
-  return [field] (double v) {
-    pcl_flowseg::MergeParameters m;
-    m.*field = v;
-    return pcl_flowseg::checkMergeParameters (m);
-  };
+  using pcl_flowseg::ParameterType;
+  switch (info.type)
+  {
+  case ParameterType::Switch:
+    return "";
+  case ParameterType::Count:
+    return "N";
+  case ParameterType::Point:
+    return "X,Y,Z";
+  case ParameterType::Weights:
+    return "NAME=W,...";
+  case ParameterType::Choice:
+  {
+    std::string names;
+    for (const auto& c : info.choices)
+      names += (names.empty () ? "" : "|") + c;
+    return names;
+  }
+  case ParameterType::Number:
+    break;
+  }
+  return "F";
 }
+
+/** The help of a row: its description, then unit and range for numbers. */
+std::string
+helpText (const pcl_flowseg::ParameterInfo& info)
+{
+  std::string help = info.description;
+  if (info.type == pcl_flowseg::ParameterType::Number || info.type == pcl_flowseg::ParameterType::Count)
+    help += " [" + (info.unit.empty () ? "" : info.unit + "; ") + info.range + "]";
+  return help;
+}
+
+/** The options of \a name (a row's name or one of its old names): --NAME, and --no-NAME for a switch. */
+std::string
+optionNames (const pcl_flowseg::ParameterInfo& info, const std::string& name, bool with_short)
+{
+  std::string names = with_short && !info.short_option.empty () ? info.short_option + ", " : "";
+  names += pcl_flowseg::optionName (name);
+  if (info.type == pcl_flowseg::ParameterType::Switch)
+    names += ", --no-" + pcl_flowseg::optionName (name).substr (2);
+  return names;
+}
+
 } // namespace
 
+template <class Params>
 void
-addMergeOptions (OptionParser& p, pcl_flowseg::MergeParameters& merge)
+addTableOption (OptionParser& p, const pcl_flowseg::ParameterTable<Params>& table, const std::string& name, Params& params)
 {
-  using M = pcl_flowseg::MergeParameters;
-  p.number ("-r, --rho", "R", "merge threshold rho > 0; < 1 merges nothing", merge.rho, mergeCheck (&M::rho));
-  p.number ("--tolerance", "T", "merge tolerance in local sample spacings, >= 0", merge.sampling_tolerance,
-            mergeCheck (&M::sampling_tolerance));
-  p.number ("--stump-ratio", "R", "thin parts take back their stumps from parts R times thicker;\n0 = off, else >= 1",
-            merge.stump_ratio, mergeCheck (&M::stump_ratio));
-  p.number ("--compact-rho", "R", "merge threshold for compact segments, > 0; acts only above rho", merge.compact_rho,
-            mergeCheck (&M::compact_rho));
-  p.number ("--compact-size", "S", "largest compact segment, in balls of its saddle's radius, >= 0;\n0 = off",
-            merge.compact_size, mergeCheck (&M::compact_size));
-  p.number ("--min-part-share", "F",
-            "smallest part, as a share of its side's volume in [0, 1): smaller\nsegments join the neighbour across their widest saddle; 0 = keep all",
-            merge.min_part_share, mergeCheck (&M::min_part_share));
-  p.number ("--single-view-min-part-share", "F",
-            "smallest part on a single view whose hidden side is guessed\n(--use-sensor-origin), in [0, 1), in place of --min-part-share",
-            merge.single_view_min_part_share, mergeCheck (&M::single_view_min_part_share));
-  pcl_flowseg::MergeParameters* m = &merge;
-  p.action ("--paper-rule", "the paper's merging rule alone: tolerance, stump ratio, compact\nsize and smallest part shares 0",
-            [m] () { m->usePaperRule (); });
+  const pcl_flowseg::ParameterSpec<Params>* spec = pcl_flowseg::findParameter (table, name);
+  if (!spec)
+    throw std::logic_error ("no parameter '" + name + "' in the " + table.title + " table");
+  const bool is_switch = spec->info.type == pcl_flowseg::ParameterType::Switch;
+  const std::string app = p.app (), current = pcl_flowseg::optionName (spec->info.name);
+  Params* target = &params;
+  const auto set = [&table, spec, target, app, current, is_switch] (const std::string& used, const std::string& value) {
+    const bool negated = is_switch && used.compare (0, 5, "--no-") == 0;
+    const std::string current_used = negated ? "--no-" + current.substr (2) : current;
+    if (used != current_used && used != spec->info.short_option)
+      std::cerr << app << ": warning: " << used << " is deprecated: use " << current_used << "\n";
+    std::string warning;
+    const pcl_flowseg::Status s =
+        pcl_flowseg::setParameter (table, *spec, *target, is_switch ? (negated ? "false" : "true") : value, &warning);
+    if (!warning.empty ())
+      std::cerr << app << ": warning: " << warning << "\n";
+    return s ? std::string () : used + ": " + s.message;
+  };
+  const std::string shown = spec->get (params);
+  p.custom (optionNames (spec->info, spec->info.name, true), valueName (spec->info), helpText (spec->info),
+            is_switch ? (shown == "true" ? "on" : "off") : shown, set);
+  for (const auto& old : spec->info.old_names)
+    p.custom (optionNames (spec->info, old, false), valueName (spec->info), "", "", set, true);
 }
+
+template void addTableOption (OptionParser&, const pcl_flowseg::ParameterTable<pcl_flowseg::FlowParameters>&,
+                              const std::string&, pcl_flowseg::FlowParameters&);
+template void addTableOption (OptionParser&, const pcl_flowseg::ParameterTable<pcl_flowseg::SignatureParameters>&,
+                              const std::string&, pcl_flowseg::SignatureParameters&);
 
 void
 addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
 {
-  using pcl_flowseg::DimensionMode;
-  addMergeOptions (p, params.merge);
-  p.choice ("-d, --dimension", "D", "auto | 2 | 3; auto: 2D when all points lie on one plane", params.preparation.dimension,
-            std::vector<std::pair<std::string, DimensionMode>>{
-                {"auto", DimensionMode::Automatic}, {"2", DimensionMode::Planar}, {"3", DimensionMode::Spatial}});
-  p.choice ("-f, --features", "SIDE", "interior | exterior | both: which segments are reported", params.features,
-            std::vector<std::pair<std::string, pcl_flowseg::FeatureSide>>{{"interior", pcl_flowseg::FeatureSide::Interior},
-                                                                           {"exterior", pcl_flowseg::FeatureSide::Exterior},
-                                                                           {"both", pcl_flowseg::FeatureSide::Both}});
-  p.choice ("--outliers", "MODE", "auto | off | on: leave out outliers (PCL's statistical outlier\nremoval, then points off the surface their neighbours sample);\nauto: when the sample shows isolated or detached points",
-            params.preparation.outliers,
-            std::vector<std::pair<std::string, pcl_flowseg::OutlierRemoval>>{{"auto", pcl_flowseg::OutlierRemoval::Automatic},
-                                                                              {"off", pcl_flowseg::OutlierRemoval::Off},
-                                                                              {"on", pcl_flowseg::OutlierRemoval::Always}});
-  p.choice ("--smooth", "MODE", "auto | off | on: smooth a 3D sample before the triangulation (thin\nwalls keep their sides); auto: when the sample is rough (noisy)",
-            params.preparation.smoothing,
-            std::vector<std::pair<std::string, pcl_flowseg::Smoothing>>{{"auto", pcl_flowseg::Smoothing::Automatic},
-                                                                         {"off", pcl_flowseg::Smoothing::Off},
-                                                                         {"on", pcl_flowseg::Smoothing::Always}});
-  p.count ("--smooth-passes", "N", "smoothing passes: the most (auto) or exactly N (on)", params.preparation.smoothing_passes, 1u,
-           pcl_flowseg::kMaxSmoothingPasses);
-  pcl_flowseg::InteriorParameters* in = &params.interior;
-  p.action ("--no-interior", "skip interior/exterior separation: the paper's raw segmentation of\nthe whole convex hull, every segment reported",
-            [in] () { in->separate = false; });
-  p.action ("--no-manifold-repair", "keep the interior/exterior boundary as the labelling left it, also\nwhere it is not a manifold (3D)",
-            [in] () { in->manifold_repair = false; });
-  p.action ("--no-hidden-side", "with a viewpoint: do not guess the side of the single view the sensor\ncannot see (the hidden volume then joins the seen parts into few features)",
-            [in] () { in->hidden_side = false; });
-  p.choice ("--denoise", "MODE", "auto | off | on: smooth noisy samples before separating interior\nand exterior",
-            params.interior.denoising,
-            std::vector<std::pair<std::string, pcl_flowseg::Denoising>>{{"auto", pcl_flowseg::Denoising::Automatic},
-                                                                         {"off", pcl_flowseg::Denoising::Off},
-                                                                         {"on", pcl_flowseg::Denoising::Always}});
+  const auto& table = pcl_flowseg::flowParameterTable ();
+  for (const auto& spec : table.specs)
+  {
+    if (spec.info.name == "viewpoint" || spec.info.name == "threads")
+      continue; // addViewpointOptions, addThreadsOption: apps bind them to their own variables
+    addTableOption (p, table, spec.info.name, params);
+    if (spec.info.name == "single_view_min_part_share")
+    {
+      pcl_flowseg::MergeParameters* m = &params.merge;
+      p.action ("--paper-rule", "the paper's merging rule alone: sampling tolerance, stump ratio, compact size and smallest "
+                "part shares 0", [m] () { m->usePaperRule (); });
+    }
+  }
 }
 
 void
 addThreadsOption (OptionParser& p, unsigned& threads)
 {
-  p.count ("-j, --threads", "N", "worker threads: 0 = all cores, 1 = sequential", threads, 0, pcl_flowseg::kMaxThreads);
-  p.alias ("--jobs", "--threads");
+  const auto* spec = pcl_flowseg::findParameter (pcl_flowseg::flowParameterTable (), "threads");
+  unsigned* t = &threads;
+  p.custom (optionNames (spec->info, spec->info.name, true), valueName (spec->info), helpText (spec->info),
+            std::to_string (threads), [spec, t, app = p.app ()] (const std::string& used, const std::string& value) {
+              if (used == "--jobs")
+                std::cerr << app << ": warning: --jobs is deprecated: use --threads\n";
+              pcl_flowseg::FlowParameters params;
+              const pcl_flowseg::Status s = pcl_flowseg::setParameter (pcl_flowseg::flowParameterTable (), *spec, params, value);
+              if (!s)
+                return used + ": " + s.message;
+              *t = params.execution.threads;
+              return std::string ();
+            });
+  for (const auto& old : spec->info.old_names)
+    p.alias (pcl_flowseg::optionName (old), "--threads");
 }
 
 void
 addSignatureOptions (OptionParser& p, SignatureOptions& o)
 {
-  p.number ("--significance", "F", "features above this share of the interior volume are significant", o.significance,
-            [] (double v) { return pcl_flowseg::checkSignificance (v); });
-  p.count ("--mesh-points", "N", "points sampled on a mesh's faces", o.input.mesh_points, 0, kLargestCount,
-           [] (long long v) {
-             pcl_flowseg::ShapeInputOptions input;
-             input.mesh_points = static_cast<std::size_t> (v);
-             return pcl_flowseg::checkShapeInputOptions (input);
-           });
+  const auto& table = pcl_flowseg::signatureParameterTable ();
+  for (const auto& spec : table.specs)
+    addTableOption (p, table, spec.info.name, o);
 }
 
 void

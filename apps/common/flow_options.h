@@ -10,29 +10,30 @@
 #include <pcl_flowseg/common/flow_parameters.h>
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
+#include <pcl_flowseg/signature/signature_parameters.h>
 
 namespace flowseg_app {
 
-/** \brief -r/--rho, --tolerance, --stump-ratio, --compact-rho, --compact-size, --paper-rule. */
+/** \brief The option of the row \a name of \a table (its old names accepted with a warning),
+  * writing into \a params, which must outlive the parser. */
+template <class Params>
 void
-addMergeOptions (OptionParser& parser, pcl_flowseg::MergeParameters& merge);
+addTableOption (OptionParser& parser, const pcl_flowseg::ParameterTable<Params>& table, const std::string& name,
+                Params& params);
 
-/** \brief The merge options and -d/--dimension, -f/--features, --no-interior, --denoise. */
+/** \brief Every segmentation option of flowParameterTable() but the viewpoint and the threads
+  * (addViewpointOptions, addThreadsOption), and --paper-rule. */
 void
 addSegmentationOptions (OptionParser& parser, pcl_flowseg::FlowParameters& params);
 
-/** \brief -j/--threads N (also --jobs N), described the same way in every app. */
+/** \brief -j/--threads N as flowParameterTable() describes it, into \a threads. */
 void
 addThreadsOption (OptionParser& parser, unsigned& threads);
 
 /** \brief How shape files become signatures. */
-struct SignatureOptions
-{
-  double significance = pcl_flowseg::kDefaultSignificance;
-  pcl_flowseg::ShapeInputOptions input;
-};
+using SignatureOptions = pcl_flowseg::SignatureParameters;
 
-/** \brief --significance F and --mesh-points N. */
+/** \brief Every option of signatureParameterTable(): --significance, --mesh-points, --seed, ... */
 void
 addSignatureOptions (OptionParser& parser, SignatureOptions& options);
 

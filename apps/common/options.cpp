@@ -51,6 +51,32 @@ indented (const std::string& text)
   }
   return out;
 }
+/** \a text with lines longer than the help's width broken at spaces (its own line breaks kept). */
+std::string
+wrapped (const std::string& text)
+{
+  constexpr std::size_t kWidth = 100 - kHelpColumn;
+  std::string out, line;
+  std::stringstream in (text);
+  for (std::string given; std::getline (in, given);)
+  {
+    std::stringstream words (given);
+    line.clear ();
+    for (std::string word; words >> word;)
+    {
+      if (!line.empty () && line.size () + 1 + word.size () > kWidth)
+      {
+        out += line + "\n";
+        line.clear ();
+      }
+      line += (line.empty () ? "" : " ") + word;
+    }
+    out += line + "\n";
+  }
+  if (!out.empty ())
+    out.pop_back ();
+  return out;
+}
 } // namespace
 
 bool
@@ -79,7 +105,16 @@ void
 OptionParser::add (const std::string& names, const std::string& value, const std::string& help, std::string default_text,
                    std::function<std::string (const std::string&)> set)
 {
-  options_.push_back (Option{splitNames (names), value, help, std::move (default_text), std::move (set)});
+  options_.push_back (Option{splitNames (names), value, help, std::move (default_text),
+                             [set] (const std::string&, const std::string& text) { return set (text); }});
+}
+
+void
+OptionParser::custom (const std::string& names, const std::string& value, const std::string& help,
+                      const std::string& default_text, std::function<std::string (const std::string&, const std::string&)> set,
+                      bool hidden)
+{
+  options_.push_back (Option{splitNames (names), value, help, default_text, std::move (set), hidden});
 }
 
 void
@@ -184,7 +219,7 @@ OptionParser::apply (const Option& option, const std::string& name, const std::s
     given = argv[++i];
   else
     return usageError (name + " needs a value (" + option.value + ")");
-  const std::string why = option.set (given);
+  const std::string why = option.set (name, given);
   return why.empty () ? kContinue : usageError (why);
 }
 
@@ -247,6 +282,8 @@ OptionParser::help () const
   std::string out = "Usage: " + synopsis_ + "\n\n" + about_ + "\n\nOptions:\n";
   for (const Option& o : options_)
   {
+    if (o.hidden)
+      continue;
     std::string left = "  ";
     if (o.names.front ().compare (0, 2, "--") == 0)
       left += "    ";
@@ -255,7 +292,7 @@ OptionParser::help () const
     if (!o.value.empty ())
       left += " " + o.value;
     left += left.size () + 1 < kHelpColumn ? std::string (kHelpColumn - left.size (), ' ') : "\n" + std::string (kHelpColumn, ' ');
-    out += left + indented (o.help + (o.default_text.empty () ? "" : " (default " + o.default_text + ")")) + "\n";
+    out += left + indented (wrapped (o.help + (o.default_text.empty () ? "" : " (default " + o.default_text + ")"))) + "\n";
   }
   out += "  -h, --help             this help\n";
   if (!epilogue_.empty ())

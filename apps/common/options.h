@@ -51,6 +51,11 @@ public:
   template <class T>
   void choice (const std::string& names, const std::string& value, const std::string& help, T& target,
                const std::vector<std::pair<std::string, T>>& choices);
+  /** An option whose value \a set interprets: it receives the name used and the value ("" for a
+    * switch, whose \a value is "") and returns why it is refused, or "". \a hidden options are
+    * accepted but not listed (old spellings). */
+  void custom (const std::string& names, const std::string& value, const std::string& help, const std::string& default_text,
+               std::function<std::string (const std::string& name, const std::string& value)> set, bool hidden = false);
   /** Another name for the option called \a name, accepted but not listed. */
   void alias (const std::string& alias, const std::string& name);
   /** Text after the options in the help (outputs, exit status). */
@@ -75,7 +80,9 @@ private:
     std::string value;        ///< empty for switches
     std::string help;
     std::string default_text; ///< empty: none shown
-    std::function<std::string (const std::string&)> set; ///< returns why the value is refused, or ""
+    /** Takes the name used and the value; returns why the value is refused, or "". */
+    std::function<std::string (const std::string&, const std::string&)> set;
+    bool hidden = false; ///< accepted, not listed in the help
   };
   void add (const std::string& names, const std::string& value, const std::string& help, std::string default_text,
             std::function<std::string (const std::string&)> set);

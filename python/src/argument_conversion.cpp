@@ -4,6 +4,7 @@
  */
 #include "argument_conversion.h"
 
+#include <pcl_flowseg/common/flow_parameter_table.h>
 #include <pcl_flowseg/signature/signature.h>
 
 #include <cmath>
@@ -105,6 +106,116 @@ toViewpoint (const std::string& name, const ArgumentValue& value, std::optional<
   return {};
 }
 
+/** \a value as the text the parameter table reads for a row of \a info's type, or why it cannot be one. */
+Conversion
+toText (const pcl_flowseg::ParameterInfo& info, const ArgumentValue& value, std::string& text)
+{
+  using pcl_flowseg::ParameterType;
+  const std::string& name = info.name;
+  switch (info.type)
+  {
+  case ParameterType::Number:
+  {
+    double v = 0.0;
+    const Conversion r = toNumber (name, value, v);
+    text = pcl_flowseg::numberText (v);
+    return r;
+  }
+  case ParameterType::Count:
+  {
+    std::int64_t v = 0;
+    const Conversion r = toCount (name, value, 0, std::numeric_limits<std::int64_t>::max (), v);
+    text = std::to_string (v);
+    return r;
+  }
+  case ParameterType::Switch:
+  {
+    bool v = false;
+    const Conversion r = toFlag (name, value, v);
+    text = v ? "true" : "false";
+    return r;
+  }
+  case ParameterType::Point:
+  {
+    std::optional<Eigen::Vector3d> v;
+    const Conversion r = toViewpoint (name, value, v);
+    text = pcl_flowseg::pointText (v);
+    return r;
+  }
+  case ParameterType::Choice:
+  case ParameterType::Weights:
+    if (const auto* s = std::get_if<std::string> (&value))
+    {
+      text = *s;
+      return {};
+    }
+    return badValue (name + ": needs a str, got " + typeName (value));
+  }
+  return badValue (name + ": unknown parameter type");
+}
+
+/** The table row's text \a text as Python's value for a row of \a info's type. */
+ArgumentValue
+fromText (const pcl_flowseg::ParameterInfo& info, const std::string& text)
+{
+  using pcl_flowseg::ParameterType;
+  switch (info.type)
+  {
+  case ParameterType::Number:
+    return std::strtod (text.c_str (), nullptr);
+  case ParameterType::Count:
+    return static_cast<std::int64_t> (std::strtoll (text.c_str (), nullptr, 10));
+  case ParameterType::Switch:
+    return text == "true";
+  case ParameterType::Point:
+  {
+    std::optional<Eigen::Vector3d> v;
+    pcl_flowseg::parsePoint (text, v);
+    if (!v)
+      return std::monostate ();
+    return std::vector<double>{v->x (), v->y (), v->z ()};
+  }
+  case ParameterType::Choice:
+  case ParameterType::Weights:
+    break;
+  }
+  return text;
+}
+
+/** Sets the row \a spec of \a table in \a params from Python's \a value; an old spelling of the
+  * name (\a old_name) or of the value adds a deprecation warning to \a warnings. */
+template <class Params>
+Conversion
+setFromValue (const pcl_flowseg::ParameterTable<Params>& table, const pcl_flowseg::ParameterSpec<Params>& spec,
+              const std::string& given_name, const ArgumentValue& value, Params& params, std::vector<std::string>& warnings)
+{
+  std::string text, warning;
+  if (const Conversion r = toText (spec.info, value, text); !r)
+    return r;
+  if (given_name != spec.info.name)
+    warnings.push_back ("keyword '" + given_name + "' is deprecated: use '" + spec.info.name + "'");
+  const pcl_flowseg::Status s = pcl_flowseg::setParameter (table, spec, params, text, &warning);
+  if (!warning.empty ())
+    warnings.push_back (warning);
+  return s ? Conversion{} : badValue (s.message);
+}
+
+/** The keyword form of every row of \a table in \a params. */
+template <class Params>
+void
+appendArguments (const pcl_flowseg::ParameterTable<Params>& table, const Params& params, Arguments& arguments)
+{
+  for (const auto& spec : table.specs)
+    arguments.emplace_back (spec.info.name, fromText (spec.info, spec.get (params)));
+}
+
+/** The group a row of the signature table belongs to. */
+ArgumentGroups
+signatureGroup (const pcl_flowseg::ParameterInfo& info)
+{
+  return info.group == "input" ? kShapeInputArguments : kSignificanceArgument;
+}
+
 using Setter = std::function<Conversion (const std::string&, const ArgumentValue&, CallParameters&, pcl_flowseg::MatchParameters&)>;
 
 struct Keyword
@@ -113,124 +224,11 @@ struct Keyword
   Setter set;
 };
 
-Setter
-numberSetter (double CallParameters::*group_field)
-{
-  return [group_field] (const std::string& n, const ArgumentValue& v, CallParameters& c, pcl_flowseg::MatchParameters&) {
-    return toNumber (n, v, c.*group_field);
-  };
-}
-
-template <typename Group>
-Setter
-flowNumber (Group pcl_flowseg::FlowParameters::*group, double Group::*field)
-{
-  return [group, field] (const std::string& n, const ArgumentValue& v, CallParameters& c, pcl_flowseg::MatchParameters&) {
-    return toNumber (n, v, (c.flow.*group).*field);
-  };
-}
-
-const std::vector<std::string> kDimensionNames = {"automatic", "", "planar", "spatial"};
-/** The names of the Automatic / Off / Always modes (Denoising, OutlierRemoval, Smoothing), in enum order. */
-const std::vector<std::string> kModeNames = {"automatic", "off", "always"};
-const std::vector<std::string> kFeatureNames = {"interior", "exterior", "both"};
-
-/** A keyword naming one of \a names, stored in \a field of \a group as the enum of that index. */
-template <typename Group, typename Enum>
-Setter
-flowChoice (Group pcl_flowseg::FlowParameters::*group, Enum Group::*field, const std::vector<std::string>& names)
-{
-  return [group, field, &names] (const std::string& n, const ArgumentValue& v, CallParameters& c, pcl_flowseg::MatchParameters&) {
-    std::size_t i = 0;
-    const Conversion r = toChoice (n, v, names, i);
-    (c.flow.*group).*field = static_cast<Enum> (i);
-    return r;
-  };
-}
-
-/** The flow keywords: every FlowParameters field under its own name. */
+/** The matching keywords. */
 void
-addFlowKeywords (std::map<std::string, Keyword>& k)
-{
-  using FP = pcl_flowseg::FlowParameters;
-  using MP = pcl_flowseg::MatchParameters;
-  k["dimension"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                      std::size_t i = 0;
-                      const Conversion r = toChoice (n, v, {"automatic", "planar", "spatial"}, i);
-                      if (r)
-                        c.flow.preparation.dimension = i == 0 ? pcl_flowseg::DimensionMode::Automatic
-                                                       : i == 1 ? pcl_flowseg::DimensionMode::Planar
-                                                                : pcl_flowseg::DimensionMode::Spatial;
-                      return r;
-                    }};
-  k["planar_tolerance"] = {kFlowArguments, flowNumber (&FP::preparation, &pcl_flowseg::PreparationParameters::planar_tolerance)};
-  k["outliers"] = {kFlowArguments, flowChoice (&FP::preparation, &pcl_flowseg::PreparationParameters::outliers, kModeNames)};
-  k["smoothing"] = {kFlowArguments, flowChoice (&FP::preparation, &pcl_flowseg::PreparationParameters::smoothing, kModeNames)};
-  k["smoothing_passes"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                             std::int64_t passes = 0;
-                             const Conversion r = toCount (n, v, 1, pcl_flowseg::kMaxSmoothingPasses, passes);
-                             c.flow.preparation.smoothing_passes = static_cast<unsigned> (passes);
-                             return r;
-                           }};
-  k["rho"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::rho)};
-  k["sampling_tolerance"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::sampling_tolerance)};
-  k["stump_ratio"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::stump_ratio)};
-  k["compact_rho"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::compact_rho)};
-  k["compact_size"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::compact_size)};
-  k["min_part_share"] = {kFlowArguments, flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::min_part_share)};
-  k["single_view_min_part_share"] = {kFlowArguments,
-                                     flowNumber (&FP::merge, &pcl_flowseg::MergeParameters::single_view_min_part_share)};
-  k["separate"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                     return toFlag (n, v, c.flow.interior.separate);
-                   }};
-  k["manifold_repair"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                            return toFlag (n, v, c.flow.interior.manifold_repair);
-                          }};
-  k["hidden_side"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                        return toFlag (n, v, c.flow.interior.hidden_side);
-                      }};
-  k["denoising"] = {kFlowArguments, flowChoice (&FP::interior, &pcl_flowseg::InteriorParameters::denoising, kModeNames)};
-  k["viewpoint"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                      return toViewpoint (n, v, c.flow.interior.viewpoint);
-                    }};
-  k["features"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                     std::size_t i = 0;
-                     const Conversion r = toChoice (n, v, kFeatureNames, i);
-                     c.flow.features = static_cast<pcl_flowseg::FeatureSide> (i);
-                     return r;
-                   }};
-  k["threads"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                    std::int64_t t = 0;
-                    const Conversion r = toCount (n, v, 0, std::numeric_limits<unsigned>::max (), t);
-                    c.flow.execution.threads = static_cast<unsigned> (t);
-                    return r;
-                  }};
-  k["memory_limit"] = {kFlowArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                         std::int64_t bytes = 0;
-                         const Conversion r = toCount (n, v, 0, std::numeric_limits<std::int64_t>::max (), bytes);
-                         c.flow.execution.memory_limit = static_cast<std::size_t> (bytes);
-                         return r;
-                       }};
-}
-
-/** Significance, shape input and matching keywords. */
-void
-addOtherKeywords (std::map<std::string, Keyword>& k)
+addMatchKeywords (std::map<std::string, Keyword>& k)
 {
   using MP = pcl_flowseg::MatchParameters;
-  k["significance"] = {kSignificanceArgument, numberSetter (&CallParameters::significance)};
-  k["mesh_points"] = {kShapeInputArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                        std::int64_t count = 0;
-                        const Conversion r = toCount (n, v, 0, std::numeric_limits<std::int64_t>::max (), count);
-                        c.input.mesh_points = static_cast<std::size_t> (count);
-                        return r;
-                      }};
-  k["seed"] = {kShapeInputArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters& c, MP&) {
-                 std::int64_t seed = 0;
-                 const Conversion r = toCount (n, v, 0, std::numeric_limits<std::uint32_t>::max (), seed);
-                 c.input.seed = static_cast<std::uint32_t> (seed);
-                 return r;
-               }};
   k["method"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
                    std::vector<std::string> names;
                    for (pcl_flowseg::MatchMethod method : pcl_flowseg::kMatchMethods)
@@ -259,8 +257,7 @@ keywords ()
 {
   static const std::map<std::string, Keyword> table = [] {
     std::map<std::string, Keyword> k;
-    addFlowKeywords (k);
-    addOtherKeywords (k);
+    addMatchKeywords (k);
     return k;
   }();
   return table;
@@ -273,9 +270,7 @@ checkGroups (unsigned groups, const CallParameters& call, const pcl_flowseg::Mat
   pcl_flowseg::Status s;
   if ((groups & kFlowArguments) && !(s = pcl_flowseg::checkParameters (call.flow)))
     return badValue (s.message);
-  if ((groups & kSignificanceArgument) && !(s = pcl_flowseg::checkSignificance (call.significance)))
-    return badValue (s.message);
-  if ((groups & kShapeInputArguments) && !(s = pcl_flowseg::checkShapeInputOptions (call.input)))
+  if ((groups & (kSignificanceArgument | kShapeInputArguments)) && !(s = pcl_flowseg::checkSignatureParameters (call)))
     return badValue (s.message);
   if ((groups & kMatchArguments) && !(s = pcl_flowseg::checkMatchParameters (match)))
     return badValue (s.message);
@@ -284,53 +279,78 @@ checkGroups (unsigned groups, const CallParameters& call, const pcl_flowseg::Mat
 
 } // namespace
 
+namespace {
+
+/** Applies the keyword \a name of the flow or signature table, when \a groups take it: true when
+  * one of the tables has it (\a result then says how it went, \a canonical names the row). */
+bool
+applyTableKeyword (const std::string& name, const ArgumentValue& value, unsigned groups, CallParameters& call,
+                   Conversion& result, std::string& canonical)
+{
+  std::vector<std::string> warnings;
+  if (const auto* spec = pcl_flowseg::findParameter (pcl_flowseg::flowParameterTable (), name))
+  {
+    canonical = spec->info.name;
+    result = (groups & kFlowArguments)
+                 ? setFromValue (pcl_flowseg::flowParameterTable (), *spec, name, value, call.flow, warnings)
+                 : Conversion{ArgumentError::UnknownName, "unexpected keyword argument '" + name + "'"};
+  }
+  else if (const auto* spec = pcl_flowseg::findParameter (pcl_flowseg::signatureParameterTable (), name))
+  {
+    canonical = spec->info.name;
+    pcl_flowseg::SignatureParameters& signature = call;
+    result = (groups & signatureGroup (spec->info))
+                 ? setFromValue (pcl_flowseg::signatureParameterTable (), *spec, name, value, signature, warnings)
+                 : Conversion{ArgumentError::UnknownName, "unexpected keyword argument '" + name + "'"};
+  }
+  else
+    return false;
+  result.warnings = warnings;
+  return true;
+}
+
+} // namespace
+
 Conversion
 applyArguments (const Arguments& arguments, unsigned groups, CallParameters& call, pcl_flowseg::MatchParameters& match)
 {
   std::set<std::string> seen;
+  std::vector<std::string> warnings;
   for (const auto& [name, value] : arguments)
   {
-    const auto found = keywords ().find (name);
-    if (found == keywords ().end () || !(groups & found->second.group))
-      return Conversion{ArgumentError::UnknownName, "unexpected keyword argument '" + name + "'"};
-    if (!seen.insert (name).second)
-      return Conversion{ArgumentError::UnknownName, "keyword argument '" + name + "' given twice"};
-    if (const Conversion r = found->second.set (name, value, call, match); !r)
+    Conversion r;
+    std::string canonical = name;
+    if (!applyTableKeyword (name, value, groups, call, r, canonical))
+    {
+      const auto found = keywords ().find (name);
+      if (found == keywords ().end () || !(groups & found->second.group))
+        return Conversion{ArgumentError::UnknownName, "unexpected keyword argument '" + name + "'"};
+      r = found->second.set (name, value, call, match);
+    }
+    if (!seen.insert (canonical).second)
+      return Conversion{ArgumentError::UnknownName, "keyword argument '" + canonical + "' given twice"};
+    if (!r)
       return r;
+    warnings.insert (warnings.end (), r.warnings.begin (), r.warnings.end ());
   }
-  return checkGroups (groups, call, match);
+  Conversion checked = checkGroups (groups, call, match);
+  checked.warnings = warnings;
+  return checked;
 }
 
 Arguments
 flowArguments (const pcl_flowseg::FlowParameters& p)
 {
   Arguments a;
-  const std::size_t dimension = p.preparation.dimension == pcl_flowseg::DimensionMode::Automatic ? 0
-                                : p.preparation.dimension == pcl_flowseg::DimensionMode::Planar  ? 2
-                                                                                                 : 3;
-  a.emplace_back ("dimension", kDimensionNames[dimension]);
-  a.emplace_back ("planar_tolerance", p.preparation.planar_tolerance);
-  a.emplace_back ("outliers", kModeNames[static_cast<std::size_t> (p.preparation.outliers) % 3]);
-  a.emplace_back ("smoothing", kModeNames[static_cast<std::size_t> (p.preparation.smoothing) % 3]);
-  a.emplace_back ("smoothing_passes", static_cast<std::int64_t> (p.preparation.smoothing_passes));
-  a.emplace_back ("rho", p.merge.rho);
-  a.emplace_back ("sampling_tolerance", p.merge.sampling_tolerance);
-  a.emplace_back ("stump_ratio", p.merge.stump_ratio);
-  a.emplace_back ("compact_rho", p.merge.compact_rho);
-  a.emplace_back ("compact_size", p.merge.compact_size);
-  a.emplace_back ("min_part_share", p.merge.min_part_share);
-  a.emplace_back ("single_view_min_part_share", p.merge.single_view_min_part_share);
-  a.emplace_back ("separate", p.interior.separate);
-  a.emplace_back ("denoising", kModeNames[static_cast<std::size_t> (p.interior.denoising) % 3]);
-  a.emplace_back ("manifold_repair", p.interior.manifold_repair);
-  a.emplace_back ("hidden_side", p.interior.hidden_side);
-  if (p.interior.viewpoint)
-    a.emplace_back ("viewpoint", std::vector<double>{p.interior.viewpoint->x (), p.interior.viewpoint->y (), p.interior.viewpoint->z ()});
-  else
-    a.emplace_back ("viewpoint", std::monostate ());
-  a.emplace_back ("features", kFeatureNames[static_cast<std::size_t> (p.features) % 3]);
-  a.emplace_back ("threads", static_cast<std::int64_t> (p.execution.threads));
-  a.emplace_back ("memory_limit", static_cast<std::int64_t> (p.execution.memory_limit));
+  appendArguments (pcl_flowseg::flowParameterTable (), p, a);
+  return a;
+}
+
+Arguments
+signatureArguments (const pcl_flowseg::SignatureParameters& p)
+{
+  Arguments a;
+  appendArguments (pcl_flowseg::signatureParameterTable (), p, a);
   return a;
 }
 

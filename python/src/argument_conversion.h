@@ -9,6 +9,7 @@
 #include <pcl_flowseg/common/flow_parameters.h>
 #include <pcl_flowseg/common/status.h>
 #include <pcl_flowseg/io/shape_input.h>
+#include <pcl_flowseg/signature/signature_parameters.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <Eigen/Core>
@@ -27,20 +28,19 @@ namespace pcl_flowseg_python {
 using ArgumentValue = std::variant<std::monostate, bool, std::int64_t, double, std::string, std::vector<double>>;
 using Arguments = std::vector<std::pair<std::string, ArgumentValue>>;
 
-/** \brief Everything segment() and the signature functions take, parsed from keywords. */
-struct CallParameters
+/** \brief Everything segment() and the signature functions take, parsed from keywords: the
+  * signature parameters (significance, input) and the segmentation's. */
+struct CallParameters : pcl_flowseg::SignatureParameters
 {
   pcl_flowseg::FlowParameters flow;
-  double significance = pcl_flowseg::kDefaultSignificance;
-  pcl_flowseg::ShapeInputOptions input;
 };
 
 /** \brief Which keyword groups a call accepts. */
 enum ArgumentGroups : unsigned
 {
-  kFlowArguments = 1u,         ///< FlowParameters, flat (rho, threads, viewpoint, ...)
-  kSignificanceArgument = 2u,  ///< significance
-  kShapeInputArguments = 4u,   ///< mesh_points, seed
+  kFlowArguments = 1u,         ///< flowParameterTable (rho, threads, viewpoint, ...)
+  kSignificanceArgument = 2u,  ///< signatureParameterTable's significance
+  kShapeInputArguments = 4u,   ///< signatureParameterTable's input rows (mesh_points, seed, ...)
   kMatchArguments = 8u         ///< threshold, allow_mirror, alignment_points
 };
 
@@ -57,18 +57,25 @@ struct Conversion
 {
   ArgumentError error = ArgumentError::None;
   std::string message;
+  std::vector<std::string> warnings; ///< old spellings used: Python issues a DeprecationWarning each
   explicit operator bool () const { return error == ArgumentError::None; }
 };
 
 /** \brief Applies \a arguments of the groups \a groups to \a call and \a match (either may be
-  * unused), each name once, then checks the results with the library's checks. */
+  * unused), each name once, then checks the results with the library's checks. The keywords and
+  * their values are those of flowParameterTable and signatureParameterTable (old spellings are
+  * accepted and reported in Conversion::warnings). */
 Conversion
 applyArguments (const Arguments& arguments, unsigned groups, CallParameters& call, pcl_flowseg::MatchParameters& match);
 
-/** \brief The flat keyword form of \a params (every FlowParameters field, enumerations as their
-  * lower-case names, viewpoint None or three numbers): applyArguments of it gives \a params back. */
+/** \brief The keyword form of \a params, a keyword per row of flowParameterTable (choices as
+  * their names, viewpoint None or three numbers): applyArguments of it gives \a params back. */
 Arguments
 flowArguments (const pcl_flowseg::FlowParameters& params);
+
+/** \brief The keyword form of \a params, a keyword per row of signatureParameterTable. */
+Arguments
+signatureArguments (const pcl_flowseg::SignatureParameters& params);
 
 /** \brief The keyword form of \a match. */
 Arguments

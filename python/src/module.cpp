@@ -6,6 +6,7 @@
 #include "bindings.h"
 #include "python_values.h"
 
+#include <pcl_flowseg/common/flow_parameter_table.h>
 #include <pcl_flowseg/signature/signature_database.h>
 
 PYBIND11_MODULE (_pcl_flowseg, m)
@@ -19,9 +20,8 @@ PYBIND11_MODULE (_pcl_flowseg, m)
   m.def ("defaults", [] () {
     CallParameters call;
     py::dict d = argumentsToDict (flowArguments (call.flow));
-    d["significance"] = call.significance;
-    d["mesh_points"] = call.input.mesh_points;
-    d["seed"] = call.input.seed;
+    for (const auto& [name, value] : argumentsToDict (signatureArguments (call)))
+      d[name] = value;
     for (const auto& [name, value] : argumentsToDict (matchArguments (pcl_flowseg::MatchParameters ())))
       d[name] = value;
     d["k"] = pcl_flowseg::kDefaultQueryResults;
@@ -29,15 +29,16 @@ PYBIND11_MODULE (_pcl_flowseg, m)
     return d;
   }, "Every keyword of the module's functions with its default (the C++ defaults, from the library).");
   m.def ("paper_rule", [] (double rho) {
-    const pcl_flowseg::MergeParameters merge = pcl_flowseg::MergeParameters::paperRule (rho);
-    py::dict d;
-    d["rho"] = merge.rho;
-    d["sampling_tolerance"] = merge.sampling_tolerance;
-    d["stump_ratio"] = merge.stump_ratio;
-    d["compact_size"] = merge.compact_size;
-    d["min_part_share"] = merge.min_part_share;
-    d["single_view_min_part_share"] = merge.single_view_min_part_share;
-    return d;
+    pcl_flowseg::FlowParameters params;
+    params.merge = pcl_flowseg::MergeParameters::paperRule (rho);
+    const Arguments all = flowArguments (params);
+    Arguments merge;
+    for (const auto& spec : pcl_flowseg::flowParameterTable ().specs)
+      if (spec.info.group == "merge" && spec.info.name != "compact_rho")
+        for (const auto& argument : all)
+          if (argument.first == spec.info.name)
+            merge.push_back (argument);
+    return argumentsToDict (merge);
   }, py::arg ("rho") = pcl_flowseg::MergeParameters ().rho,
      "The merge keywords of the paper's rule alone at rho: segment(points, **paper_rule(1.3)).");
 }

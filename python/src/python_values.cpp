@@ -97,6 +97,9 @@ applyKwargs (const py::kwargs& kwargs, unsigned groups, CallParameters& call, pc
     throw py::type_error (c.message);
   if (!c)
     throw py::value_error (c.message);
+  for (const std::string& warning : c.warnings)
+    if (PyErr_WarnEx (PyExc_DeprecationWarning, warning.c_str (), 1) != 0)
+      throw py::error_already_set ();
 }
 
 py::dict

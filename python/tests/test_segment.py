@@ -47,8 +47,8 @@ def test_parameters_round_trip():
     points, _ = fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))
     given = dict(rho=1.3, sampling_tolerance=0.25, stump_ratio=0.0, compact_rho=1.5, compact_size=0.0, min_part_share=0.01,
                  single_view_min_part_share=0.02,
-                 denoising="off", outliers="off", smoothing="always", smoothing_passes=1, features="both", threads=1, dimension="spatial", planar_tolerance=1e-6,
-                 viewpoint=(0.0, 0.0, 10.0), memory_limit=8 << 30, separate=True, manifold_repair=False, hidden_side=False, significance=0.05)
+                 denoising="off", outliers="off", smoothing="on", smoothing_passes=1, features="both", threads=1, dimension="3", planar_tolerance=1e-6,
+                 viewpoint=(0.0, 0.0, 10.0), memory_limit=8 << 30, separate_interior=True, manifold_repair=False, hidden_side=False, significance=0.05)
     seg = fs.segment(points, **given)
     used = seg.parameters
     for name, value in given.items():
@@ -58,6 +58,19 @@ def test_parameters_round_trip():
     assert seg.hidden_side_vertices == 0 and seg.interior["island_cells"] == 0
     again = fs.segment(points, **used)
     assert (again.labels == seg.labels).all() and again.parameters == used
+
+
+def test_old_spellings_work_with_a_deprecation_warning():
+    points, _ = fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))
+    old = dict(dimension="spatial", smoothing="always", outliers="automatic", separate=True)
+    new = dict(dimension="3", smoothing="on", outliers="auto", separate_interior=True)
+    with pytest.warns(DeprecationWarning) as caught:
+        seg = fs.segment(points, threads=1, **old)
+    said = " ".join(str(w.message) for w in caught)
+    assert "'separate' is deprecated" in said and "'spatial' is deprecated" in said and "'always' is deprecated" in said
+    assert seg.parameters == fs.segment(points, threads=1, **new).parameters
+    with pytest.raises(TypeError, match="given twice"):
+        fs.segment(points, separate=True, separate_interior=True)
 
 
 def test_defaults_are_the_library_defaults():
