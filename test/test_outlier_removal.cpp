@@ -4,7 +4,7 @@
  * and labelled no segment; clean and noisy samples are left alone.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include "core/interior/detached_points.h"
+#include "core/preparation/detached_points.h"
 #include "test_support.h"
 
 #include <pcl_flowseg/common/feature_significance.h>

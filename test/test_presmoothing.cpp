@@ -4,9 +4,10 @@
  * alone, absurd settings refused.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "core/geometry/point_neighbourhoods.h"
 #include "core/interior/denoising.h"
-#include "core/interior/noise_estimate.h"
-#include "core/interior/sample_smoothing.h"
+#include "core/preparation/noise_estimate.h"
+#include "core/preparation/sample_smoothing.h"
 #include "test_support.h"
 
 #include <pcl_flowseg/common/feature_significance.h>

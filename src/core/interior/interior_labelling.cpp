@@ -6,6 +6,7 @@
 #include "core/interior/interior_labelling.h"
 
 #include "core/geometry/cell_geometry.h"
+#include "core/geometry/point_neighbourhoods.h"
 #include "core/interior/boundary_measure.h"
 #include "core/interior/denoising.h"
 #include "core/interior/greedy_labelling.h"

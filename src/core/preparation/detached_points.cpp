@@ -2,9 +2,9 @@
  * pcl_flowseg - internal: sample points that lie off the surface their neighbours sample (outliers).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include "core/interior/detached_points.h"
+#include "core/preparation/detached_points.h"
 
-#include "core/interior/denoising.h"
+#include "core/geometry/point_neighbourhoods.h"
 #include "core/support/parallel.h"
 
 #include <algorithm>

@@ -2,9 +2,9 @@
  * pcl_flowseg - internal: smoothing of a noisy 3D sample before its triangulation.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include "core/interior/sample_smoothing.h"
+#include "core/preparation/sample_smoothing.h"
 
-#include "core/interior/denoising.h"
+#include "core/geometry/point_neighbourhoods.h"
 #include "core/support/parallel.h"
 
 #include <cmath>

@@ -2,10 +2,10 @@
  * pcl_flowseg - internal: the noise of a point sample, estimated from its local neighbourhoods.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include "core/interior/noise_estimate.h"
+#include "core/preparation/noise_estimate.h"
 
-#include "core/interior/denoising.h"
-#include "core/interior/detached_points.h"
+#include "core/geometry/point_neighbourhoods.h"
+#include "core/preparation/detached_points.h"
 
 #include <algorithm>
 
