@@ -42,10 +42,12 @@ TYPED_TEST (FlowSegmentationTyped, SegmentsCoverEveryPointOnce)
   typename pcl::FlowSegmentation<TypeParam>::Ptr seg (new pcl::FlowSegmentation<TypeParam>);
   seg->setInputCloud (cloud);
   EXPECT_EQ (seg->getRho (), pcl_flowseg::MergeParameters ().rho);
-  EXPECT_EQ (seg->getSamplingTolerance (), pcl_flowseg::MergeParameters ().sampling_tolerance);
-  EXPECT_EQ (seg->getStumpRatio (), pcl_flowseg::MergeParameters ().stump_ratio);
-  EXPECT_TRUE (seg->getSeparateInterior ());
-  seg->setSeparateInterior (false); // the raw segmentation covers every point
+  EXPECT_EQ (seg->getParameters ().merge.sampling_tolerance, pcl_flowseg::MergeParameters ().sampling_tolerance);
+  EXPECT_EQ (seg->getParameters ().merge.stump_ratio, pcl_flowseg::MergeParameters ().stump_ratio);
+  pcl_flowseg::FlowParameters raw = seg->getParameters ();
+  EXPECT_TRUE (raw.interior.separate);
+  raw.interior.separate = false; // the raw segmentation covers every point
+  seg->setParameters (raw);
   std::vector<pcl::PointIndices> segments;
   ASSERT_TRUE (seg->segment (segments)) << seg->getLastError ();
   EXPECT_TRUE (seg->getLastError ().empty ());
@@ -144,7 +146,9 @@ TEST (FlowSegmentation, IndicesRestrictTheInput)
   pcl::FlowSegmentation<pcl::PointXYZ> seg;
   seg.setInputCloud (cloud);
   seg.setIndices (indices);
-  seg.setSeparateInterior (false);
+  pcl_flowseg::FlowParameters raw;
+  raw.interior.separate = false;
+  seg.setParameters (raw);
   std::vector<pcl::PointIndices> segments;
   ASSERT_TRUE (seg.segment (segments)) << seg.getLastError ();
   EXPECT_EQ (seg.getResult ().input_points, indices->size ());
@@ -180,10 +184,13 @@ TEST (FlowSegmentation, ErrorsAreReportedNotThrown)
   EXPECT_FALSE (seg.segment (segments));
   EXPECT_NE (seg.getLastError ().find ("rho"), std::string::npos);
   seg.setRho (1.5);
-  seg.setSamplingTolerance (-0.5);
+  pcl_flowseg::FlowParameters bad = seg.getParameters ();
+  bad.merge.sampling_tolerance = -0.5;
+  seg.setParameters (bad);
   EXPECT_FALSE (seg.segment (segments));
   EXPECT_NE (seg.getLastError ().find ("tolerance"), std::string::npos) << seg.getLastError ();
-  seg.setSamplingTolerance (0.5);
+  bad.merge.sampling_tolerance = 0.5;
+  seg.setParameters (bad);
   seg.setDimension (7);
   EXPECT_FALSE (seg.segment (segments));
   EXPECT_NE (seg.getLastError ().find ("dimension"), std::string::npos);
@@ -208,10 +215,12 @@ TEST (FlowSegmentation, RemergeEqualsAFreshRun)
   for (std::size_t k = 0; k < sa.size (); ++k)
     EXPECT_EQ (sa[k].indices, sb[k].indices);
   // remerge keeps the sampling tolerance and stump ratio that were set (here 0: the paper's rule).
-  a.setSamplingTolerance (0.0);
-  b.setSamplingTolerance (0.0);
-  a.setStumpRatio (0.0);
-  b.setStumpRatio (0.0);
+  for (pcl::FlowSegmentation<pcl::PointXYZ>* s : {&a, &b})
+  {
+    pcl_flowseg::FlowParameters p = s->getParameters ();
+    p.merge.sampling_tolerance = p.merge.stump_ratio = 0.0;
+    s->setParameters (p);
+  }
   b.setRho (1.3);
   ASSERT_TRUE (b.segment (sb));
   ASSERT_TRUE (a.remerge (1.3, sa));
@@ -237,24 +246,26 @@ expectSameMerge (const pcl_flowseg::MergeParameters& a, const pcl_flowseg::Merge
 TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
 {
   pcl::FlowSegmentation<pcl::PointXYZ> seg;
+  pcl_flowseg::FlowParameters given;
+  given.merge.sampling_tolerance = 0.25;
+  given.merge.stump_ratio = 3.0;
+  given.merge.compact_rho = 1.4;
+  given.merge.compact_size = 1.5;
+  given.merge.min_part_share = 0.01;
+  given.merge.single_view_min_part_share = 0.02;
+  given.preparation.planar_tolerance = 1e-6;
+  given.preparation.outliers = pcl_flowseg::OutlierRemoval::Always;
+  given.preparation.smoothing = pcl_flowseg::Smoothing::Always;
+  given.preparation.smoothing_passes = 1;
+  given.interior.manifold_repair = false;
+  given.interior.denoising = pcl_flowseg::Denoising::Off;
+  given.execution.memory_limit = std::size_t (1) << 33;
+  seg.setParameters (given);
+  // The setters a PCL user reaches for change their field and keep the others.
   seg.setRho (1.3);
-  seg.setSamplingTolerance (0.25);
-  seg.setStumpRatio (3.0);
-  seg.setCompactRho (1.4);
-  seg.setCompactSize (1.5);
-  seg.setMinPartShare (0.01);
-  seg.setSingleViewMinPartShare (0.02);
   seg.setDimension (2);
-  seg.setPlanarTolerance (1e-6);
-  seg.setOutlierRemoval (pcl_flowseg::OutlierRemoval::Always);
-  seg.setSmoothing (pcl_flowseg::Smoothing::Always);
-  seg.setSmoothingPasses (1);
-  seg.setSeparateInterior (true);
-  seg.setManifoldRepair (false);
-  seg.setDenoising (pcl_flowseg::Denoising::Off);
   seg.setFeatureSide (pcl_flowseg::FeatureSide::Both);
   seg.setNumberOfThreads (1);
-  seg.setMemoryLimit (std::size_t (1) << 33);
   const pcl_flowseg::FlowParameters p = seg.getParameters ();
   EXPECT_EQ (p.merge.rho, 1.3);
   EXPECT_EQ (p.merge.sampling_tolerance, 0.25);
@@ -270,7 +281,6 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   EXPECT_EQ (p.preparation.smoothing_passes, 1u);
   EXPECT_EQ (p.interior.denoising, pcl_flowseg::Denoising::Off);
   EXPECT_FALSE (p.interior.manifold_repair);
-  EXPECT_FALSE (seg.getManifoldRepair ());
   EXPECT_EQ (p.features, pcl_flowseg::FeatureSide::Both);
   EXPECT_EQ (p.execution.threads, 1u);
   EXPECT_EQ (p.execution.memory_limit, std::size_t (1) << 33);
@@ -279,10 +289,10 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   other.setParameters (p);
   EXPECT_EQ (other.getRho (), 1.3);
   EXPECT_EQ (other.getDimension (), 2);
-  EXPECT_EQ (other.getOutlierRemoval (), pcl_flowseg::OutlierRemoval::Always);
-  EXPECT_EQ (other.getSmoothingPasses (), 1u);
+  EXPECT_EQ (other.getParameters ().preparation.outliers, pcl_flowseg::OutlierRemoval::Always);
+  EXPECT_EQ (other.getParameters ().preparation.smoothing_passes, 1u);
   EXPECT_EQ (other.getFeatureSide (), pcl_flowseg::FeatureSide::Both);
-  EXPECT_EQ (other.getMemoryLimit (), std::size_t (1) << 33);
+  EXPECT_EQ (other.getParameters ().execution.memory_limit, std::size_t (1) << 33);
 
   auto cloud = makeCloud<pcl::PointXYZ> (shapeSample ("hand2d", 600));
   cloud->sensor_origin_ = Eigen::Vector4f (0.5f, 9.0f, 0.0f, 0.0f);
@@ -302,7 +312,7 @@ TEST (FlowSegmentation, ParametersRoundTripAndTheResultRecordsThem)
   const pcl_flowseg::MergeParameters paper = pcl_flowseg::MergeParameters::paperRule (1.8);
   ASSERT_TRUE (other.remerge (paper, segments));
   expectSameMerge (other.getResult ().parameters.merge, paper);
-  expectSameMerge (other.getMergeParameters (), paper);
+  expectSameMerge (other.getParameters ().merge, paper);
 }
 
 TEST (FlowSegmentation, ProgressIsReportedInOrder)

@@ -237,7 +237,9 @@ TEST (ResultWriter, SegmentationOutputsAreWellFormed)
   cloud->push_back (pcl::PointXYZ (std::nanf (""), 0.0f, 0.0f));
   pcl::FlowSegmentation<pcl::PointXYZ> seg;
   seg.setInputCloud (cloud);
-  seg.setSeparateInterior (false);
+  pcl_flowseg::FlowParameters raw;
+  raw.interior.separate = false;
+  seg.setParameters (raw);
   std::vector<pcl::PointIndices> segments;
   ASSERT_TRUE (seg.segment (segments));
   pcl::PointCloud<pcl::PointXYZL> labels;

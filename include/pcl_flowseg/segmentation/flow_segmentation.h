@@ -22,9 +22,9 @@ namespace pcl {
   * manifolds of the maxima of its distance function (Dey, Giesen, Goswami 2003), merged by the
   * rho rule; by default the interior segments are reported: the shape's features.
   *
-  * The parameters are a pcl_flowseg::FlowParameters (setParameters); the setters below change
-  * one field each and take the units, ranges and defaults documented there. Bad values are
-  * reported by segment(), not by the setters.
+  * The parameters are a pcl_flowseg::FlowParameters (setParameters; docs/parameters.md lists
+  * them all); setRho, setDimension, setFeatureSide and setNumberOfThreads change one field each.
+  * Bad values are reported by segment(), not by the setters.
   *
   * \code
   * pcl::FlowSegmentation<pcl::PointXYZ> seg;
@@ -54,70 +54,18 @@ public:
   inline void setParameters (const pcl_flowseg::FlowParameters& params) { params_ = params; }
   inline const pcl_flowseg::FlowParameters& getParameters () const { return params_; }
 
-  /** \brief The merge group (pcl_flowseg::MergeParameters). */
-  inline void setMergeParameters (const pcl_flowseg::MergeParameters& merge) { params_.merge = merge; }
-  inline const pcl_flowseg::MergeParameters& getMergeParameters () const { return params_.merge; }
-
-  /** \brief pcl_flowseg::MergeParameters::rho. */
+  /** \brief pcl_flowseg::MergeParameters::rho, the paper's merge threshold (default 1.05). */
   inline void setRho (double rho) { params_.merge.rho = rho; }
   inline double getRho () const { return params_.merge.rho; }
-  /** \brief pcl_flowseg::MergeParameters::sampling_tolerance. */
-  inline void setSamplingTolerance (double tolerance) { params_.merge.sampling_tolerance = tolerance; }
-  inline double getSamplingTolerance () const { return params_.merge.sampling_tolerance; }
-  /** \brief pcl_flowseg::MergeParameters::stump_ratio. */
-  inline void setStumpRatio (double ratio) { params_.merge.stump_ratio = ratio; }
-  inline double getStumpRatio () const { return params_.merge.stump_ratio; }
-  /** \brief pcl_flowseg::MergeParameters::compact_rho. */
-  inline void setCompactRho (double rho) { params_.merge.compact_rho = rho; }
-  inline double getCompactRho () const { return params_.merge.compact_rho; }
-  /** \brief pcl_flowseg::MergeParameters::compact_size. */
-  inline void setCompactSize (double size) { params_.merge.compact_size = size; }
-  inline double getCompactSize () const { return params_.merge.compact_size; }
-  /** \brief pcl_flowseg::MergeParameters::min_part_share. */
-  inline void setMinPartShare (double share) { params_.merge.min_part_share = share; }
-  inline double getMinPartShare () const { return params_.merge.min_part_share; }
-  /** \brief pcl_flowseg::MergeParameters::single_view_min_part_share. */
-  inline void setSingleViewMinPartShare (double share) { params_.merge.single_view_min_part_share = share; }
-  inline double getSingleViewMinPartShare () const { return params_.merge.single_view_min_part_share; }
-
-  /** \brief pcl_flowseg::PreparationParameters::dimension as a number: 0 = automatic, 2 or 3. */
+  /** \brief pcl_flowseg::PreparationParameters::dimension as a number: 0 = automatic (default), 2 or 3. */
   inline void setDimension (int dimension) { params_.preparation.dimension = static_cast<pcl_flowseg::DimensionMode> (dimension); }
   inline int getDimension () const { return static_cast<int> (params_.preparation.dimension); }
-  /** \brief pcl_flowseg::PreparationParameters::planar_tolerance. */
-  inline void setPlanarTolerance (double tolerance) { params_.preparation.planar_tolerance = tolerance; }
-  inline double getPlanarTolerance () const { return params_.preparation.planar_tolerance; }
-  /** \brief pcl_flowseg::PreparationParameters::outliers. */
-  inline void setOutlierRemoval (pcl_flowseg::OutlierRemoval mode) { params_.preparation.outliers = mode; }
-  inline pcl_flowseg::OutlierRemoval getOutlierRemoval () const { return params_.preparation.outliers; }
-  /** \brief pcl_flowseg::PreparationParameters::smoothing (default Automatic). */
-  inline void setSmoothing (pcl_flowseg::Smoothing mode) { params_.preparation.smoothing = mode; }
-  inline pcl_flowseg::Smoothing getSmoothing () const { return params_.preparation.smoothing; }
-  /** \brief pcl_flowseg::PreparationParameters::smoothing_passes (default 6). */
-  inline void setSmoothingPasses (unsigned passes) { params_.preparation.smoothing_passes = passes; }
-  inline unsigned getSmoothingPasses () const { return params_.preparation.smoothing_passes; }
-
-  /** \brief pcl_flowseg::InteriorParameters::separate. */
-  inline void setSeparateInterior (bool separate) { params_.interior.separate = separate; }
-  inline bool getSeparateInterior () const { return params_.interior.separate; }
-  /** \brief pcl_flowseg::InteriorParameters::manifold_repair (default true). */
-  inline void setManifoldRepair (bool repair) { params_.interior.manifold_repair = repair; }
-  inline bool getManifoldRepair () const { return params_.interior.manifold_repair; }
-  /** \brief pcl_flowseg::InteriorParameters::hidden_side (default true; acts with a viewpoint). */
-  inline void setHiddenSide (bool guess) { params_.interior.hidden_side = guess; }
-  inline bool getHiddenSide () const { return params_.interior.hidden_side; }
-  /** \brief pcl_flowseg::InteriorParameters::denoising. */
-  inline void setDenoising (pcl_flowseg::Denoising mode) { params_.interior.denoising = mode; }
-  inline pcl_flowseg::Denoising getDenoising () const { return params_.interior.denoising; }
-  /** \brief pcl_flowseg::FlowParameters::features. */
+  /** \brief pcl_flowseg::FlowParameters::features: which segments are reported (default Interior). */
   inline void setFeatureSide (pcl_flowseg::FeatureSide side) { params_.features = side; }
   inline pcl_flowseg::FeatureSide getFeatureSide () const { return params_.features; }
-
-  /** \brief pcl_flowseg::ExecutionParameters::threads. */
+  /** \brief pcl_flowseg::ExecutionParameters::threads: 0 = all cores (default), 1 = sequential. */
   inline void setNumberOfThreads (unsigned int threads) { params_.execution.threads = threads; }
   inline unsigned int getNumberOfThreads () const { return params_.execution.threads; }
-  /** \brief pcl_flowseg::ExecutionParameters::memory_limit, in bytes. */
-  inline void setMemoryLimit (std::size_t bytes) { params_.execution.memory_limit = bytes; }
-  inline std::size_t getMemoryLimit () const { return params_.execution.memory_limit; }
 
   /** \brief Use the points' normals (types with normal_x/y/z, pointing outwards) as evidence for
     * interior/exterior. Default false; ignored for point types without normals. */

@@ -14,7 +14,9 @@ FeatureSignature<PointT>::compute (pcl_flowseg::Signature& signature)
   last_error_.clear ();
   segmentation_.setInputCloud (input_);
   segmentation_.setIndices (indices_);
-  segmentation_.setSeparateInterior (true);
+  pcl_flowseg::FlowParameters params = segmentation_.getParameters ();
+  params.interior.separate = true;
+  segmentation_.setParameters (params);
   std::vector<PointIndices> features;
   if (!segmentation_.segment (features))
   {
