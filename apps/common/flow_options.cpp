@@ -137,4 +137,24 @@ addMatchMethodOption (OptionParser& p, pcl_flowseg::MatchParameters& match)
             match.method, choices);
 }
 
+void
+addViewpointOptions (OptionParser& p, std::optional<Eigen::Vector3d>& viewpoint, bool& use_sensor_origin)
+{
+  p.point ("--viewpoint", "sensor position of a single-view scan: space in front is outside", viewpoint);
+  p.flag ("--use-sensor-origin", "take the viewpoint from the PCD file's VIEWPOINT", use_sensor_origin);
+}
+
+int
+checkViewpointOptions (const OptionParser& p, const pcl_flowseg::FlowParameters& params, bool use_sensor_origin)
+{
+  if (params.interior.viewpoint && use_sensor_origin)
+    return p.usageError ("--viewpoint and --use-sensor-origin exclude each other");
+  if (!params.interior.separate &&
+      (params.interior.viewpoint || use_sensor_origin || params.features != pcl_flowseg::FeatureSide::Interior))
+    return p.usageError ("--no-interior excludes --features, --viewpoint and --use-sensor-origin");
+  if (const pcl_flowseg::Status s = pcl_flowseg::checkParameters (params); !s)
+    return p.usageError (s.message);
+  return kContinue;
+}
+
 } // namespace flowseg_app
