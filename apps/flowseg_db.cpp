@@ -50,12 +50,15 @@ makeParser (Options& o)
            o.candidates, 0, 1000000000);
   p.text ("--label", "L", "add: class of the added shapes (default: their folder name)", o.label);
   flowseg_app::addSegmentationOptions (p, o.params);
+  flowseg_app::addViewpointOptions (p, o.params.interior.viewpoint, o.signature.input.use_sensor_origin);
   flowseg_app::addSignatureOptions (p, o.signature);
   flowseg_app::addMatchMethodOption (p, o.match);
   flowseg_app::addMatchOptions (p, o.match);
   flowseg_app::addThreadsOption (p, o.threads);
-  p.flag ("-q, --quiet", "no progress", o.quiet);
-  p.epilogue ("Exit status: 0 success, 1 unreadable input or database, 2 bad options.");
+  p.flag ("-q, --quiet", "no progress or summary on stderr", o.quiet);
+  p.epilogue ("build, add and query segment every shape with the segmentation options; with\n"
+              "--use-sensor-origin each file has its own VIEWPOINT (a collection of single-view scans).\n\n"
+              "Exit status: 0 success, 1 unreadable input or database, 2 bad options.");
   return p;
 }
 
@@ -242,6 +245,9 @@ main (int argc, char** argv)
     return parser.usageError ("need a command and a database");
   if (!o.label.empty () && o.label.find_first_of (" \t\n") != std::string::npos)
     return parser.usageError ("--label needs a class name without white space");
+  if (const int status = flowseg_app::checkViewpointOptions (parser, o.params, o.signature.input.use_sensor_origin);
+      status != flowseg_app::kContinue)
+    return status;
   const std::string& command = args[0];
   if (command == "query" || command == "list")
   {

@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <sys/stat.h>
 #include <tuple>
@@ -66,16 +67,19 @@ makeParser (Options& o)
                   "OUTDIR/scores.json (nearest neighbour, first and second tier, DCG, bull's eye for 2D sets, time).\n\n"
                   "Methods: flowseg (this module's default: its components combined), paper (the paper's\n"
                   "weighted points and alignment), the components parts, thickness, inner, solid, inner-profile,\n"
-                  "thickness-profile, contour (2D only), inner-context (see flowseg_match --method), d2 (Osada's D2 shape\n"
-                  "distribution on the same points), esf (PCL's Ensemble of Shape Functions).");
+                  "thickness-profile, contour (2D only), inner-context (as flowseg_match compares them), d2 (Osada's\n"
+                  "D2 shape distribution on the same points), esf (PCL's Ensemble of Shape Functions).");
   p.text ("-o, --output", "DIR", "output folder (created), required", o.output);
   p.text ("--methods", "LIST", "comma-separated, any of the methods above", o.methods);
   flowseg_app::addSegmentationOptions (p, o.params);
+  flowseg_app::addViewpointOptions (p, o.params.interior.viewpoint, o.signature.input.use_sensor_origin);
   flowseg_app::addSignatureOptions (p, o.signature);
   flowseg_app::addMatchOptions (p, o.match);
   flowseg_app::addThreadsOption (p, o.threads);
-  p.flag ("-q, --quiet", "no progress", o.quiet);
-  p.epilogue ("Exit status: 0 success, 1 unreadable input or output, 2 bad options.");
+  p.flag ("-q, --quiet", "no progress on stderr", o.quiet);
+  p.epilogue ("The segmentation options apply to every shape; with --use-sensor-origin each file has its own\n"
+              "VIEWPOINT (a collection of single-view scans).\n\n"
+              "Exit status: 0 success, 1 unreadable input or output, 2 bad options.");
   return p;
 }
 
@@ -127,7 +131,8 @@ describeShape (const std::string& root, const Options& o, std::size_t i, Collect
 {
   c.labels[i] = pcl_flowseg::shapeLabel (c.files[i]);
   std::vector<Eigen::Vector3d> pts;
-  pcl_flowseg::Status s = pcl_flowseg::loadShapeSample (root + "/" + c.files[i], o.signature.input, pts);
+  std::optional<Eigen::Vector3d> origin;
+  pcl_flowseg::Status s = pcl_flowseg::loadShapeSample (root + "/" + c.files[i], o.signature.input, pts, &origin);
   for (std::size_t k = 0; k < pts.size (); k += std::max<std::size_t> (1, pts.size () / 3000))
     c.drawings[i].push_back (pts[k]);
   std::array<double, 3> ms{{0.0, 0.0, 0.0}};
@@ -135,7 +140,10 @@ describeShape (const std::string& root, const Options& o, std::size_t i, Collect
   {
     const auto t0 = Clock::now ();
     pcl_flowseg::FlowResult r;
-    s = pcl_flowseg::runFlowSegmentation (pts, o.params, r);
+    pcl_flowseg::FlowParameters params = o.params;
+    if (o.signature.input.use_sensor_origin)
+      params.interior.viewpoint = origin; // this file's own
+    s = pcl_flowseg::runFlowSegmentation (pts, params, r);
     if (s)
       s = pcl_flowseg::signatureFromSegmentation (r, o.signature.significance, c.signatures[i]);
     c.dimensions[i] = r.dimension;
@@ -266,6 +274,9 @@ main (int argc, char** argv)
     return parser.usageError (roots.size () > 1 ? "more than one ROOT" : "need ROOT and --output DIR");
   if (const pcl_flowseg::Status s = parseMethods (o); !s)
     return parser.usageError (s.message);
+  if (const int status = flowseg_app::checkViewpointOptions (parser, o.params, o.signature.input.use_sensor_origin);
+      status != flowseg_app::kContinue)
+    return status;
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
 
   Collection c;

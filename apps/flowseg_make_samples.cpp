@@ -20,6 +20,7 @@ main (int argc, char** argv)
   std::string dir = "samples";
   std::size_t points2d = pcl_flowseg::kSamplePoints2D, points3d = pcl_flowseg::kSamplePoints3D;
   std::uint32_t seed = 1;
+  bool quiet = false;
   flowseg_app::OptionParser p ("flowseg_make_samples", "flowseg_make_samples [options]",
                                "Writes point samples of the procedural shapes (unions of ellipses / ellipsoids with known\n"
                                "parts) as ASCII PCD files: dumbbell2d, star2d, hand2d, dumbbell3d, snowman3d, animal3d.");
@@ -27,6 +28,7 @@ main (int argc, char** argv)
   p.count ("--points2d", "N", "points per 2D shape", points2d, 3, 10000000);
   p.count ("--points3d", "N", "points per 3D shape", points3d, 4, 10000000);
   p.count ("--seed", "S", "random seed", seed, 0, 4294967295LL);
+  p.flag ("-q, --quiet", "do not list the files written on stderr", quiet);
   std::vector<std::string> extra;
   if (const int status = p.parse (argc, argv, extra); status != flowseg_app::kContinue)
     return status;
@@ -46,7 +48,8 @@ main (int argc, char** argv)
     const std::string path = dir + "/" + shape.name + ".pcd";
     if (const pcl_flowseg::Status s = pcl_flowseg::writePointCloud (path, cloud, false); !s)
       return p.failure (s.message);
-    std::cerr << "wrote " << path << " (" << n << " points, " << shape.parts.size () << " parts)\n";
+    if (!quiet)
+      std::cerr << "wrote " << path << " (" << n << " points, " << shape.parts.size () << " parts)\n";
   }
   return flowseg_app::kExitSuccess;
 }

@@ -9,6 +9,8 @@
 #include <pcl_flowseg/signature/shape_signature.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
 
+#include <pcl/console/print.h>
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -56,6 +58,7 @@ main (int argc, char** argv)
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
   pcl_flowseg::MatchParameters match;
+  bool quiet = false;
   flowseg_app::OptionParser p ("flowseg_match", "flowseg_match A B [options]",
                                "Prints the method and the similarity (1 = identical signatures). With --method paper also the\n"
                                "paper's score, the matched features and the transformation mapping B's normalised signature onto\n"
@@ -63,14 +66,23 @@ main (int argc, char** argv)
   flowseg_app::addMatchMethodOption (p, match);
   flowseg_app::addMatchOptions (p, match);
   flowseg_app::addSegmentationOptions (p, params);
+  flowseg_app::addViewpointOptions (p, params.interior.viewpoint, signature.input.use_sensor_origin);
   flowseg_app::addSignatureOptions (p, signature);
   flowseg_app::addThreadsOption (p, params.execution.threads);
-  p.epilogue ("Exit status: 0 success, 1 unreadable or unsegmentable input, 2 bad options.");
+  p.flag ("-q, --quiet", "no messages on stderr but errors", quiet);
+  p.epilogue ("--viewpoint places the sensor of both scans; with --use-sensor-origin each of A and B has its own\n"
+              "file's VIEWPOINT.\n\n"
+              "Exit status: 0 success, 1 unreadable or unsegmentable input, 2 bad options.");
   std::vector<std::string> inputs;
   if (const int status = p.parse (argc, argv, inputs); status != flowseg_app::kContinue)
     return status;
   if (inputs.size () != 2)
     return p.usageError ("need exactly two inputs A B");
+  if (const int status = flowseg_app::checkViewpointOptions (p, params, signature.input.use_sensor_origin);
+      status != flowseg_app::kContinue)
+    return status;
+  if (quiet)
+    pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
   pcl_flowseg::Signature a, b;
   for (auto* s : {&a, &b})
   {

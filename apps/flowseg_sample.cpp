@@ -26,7 +26,7 @@ struct Options
   double outliers = 0.0;
   std::optional<Eigen::Vector3d> scan_from;
   std::uint32_t seed = 1;
-  bool binary = false;
+  bool binary = false, quiet = false;
 };
 
 /** The boundary of the silhouette in an image; \a what describes it. */
@@ -92,6 +92,7 @@ main (int argc, char** argv)
   p.point ("--scan-from", "scan the mesh from this viewpoint (mesh units, outside the mesh's\nbounding sphere)", o.scan_from);
   p.count ("--seed", "S", "random seed", o.seed, 0, 4294967295LL);
   p.flag ("--binary", "binary PCD (default ASCII)", o.binary);
+  p.flag ("-q, --quiet", "no summary on stderr", o.quiet);
   p.epilogue ("Exit status: 0 success, 1 unreadable input or unwritable output, 2 bad options.");
   std::vector<std::string> inputs;
   if (const int status = p.parse (argc, argv, inputs); status != flowseg_app::kContinue)
@@ -114,6 +115,7 @@ main (int argc, char** argv)
     cloud.push_back (pcl::PointXYZ (static_cast<float> (q.x ()), static_cast<float> (q.y ()), static_cast<float> (q.z ())));
   if (const pcl_flowseg::Status s = pcl_flowseg::writePointCloud (o.output, cloud, o.binary); !s)
     return p.failure (s.message);
-  std::cerr << "wrote " << o.output << ": " << pts.size () << " points from " << what << "\n";
+  if (!o.quiet)
+    std::cerr << "wrote " << o.output << ": " << pts.size () << " points from " << what << "\n";
   return flowseg_app::kExitSuccess;
 }

@@ -48,8 +48,7 @@ makeParser (Options& o)
   p.number ("--significance", "F", "features above this share of the reported volume are marked\n\"significant\" in the JSON and counted in the summary",
             o.significance, [] (double v) { return pcl_flowseg::checkSignificance (v); });
   p.flag ("--use-normals", "use the file's normals (must point outwards) as in/out evidence", o.use_normals);
-  p.point ("--viewpoint", "sensor position of a single-view scan: space in front is outside", o.params.interior.viewpoint);
-  p.flag ("--use-sensor-origin", "take the viewpoint from the PCD file's VIEWPOINT", o.use_sensor_origin);
+  flowseg_app::addViewpointOptions (p, o.params.interior.viewpoint, o.use_sensor_origin);
   p.text ("-o, --output", "PREFIX", "output prefix (default: INPUT without its extension)", o.prefix);
   p.flag ("--binary", "write the label PCD and the PLY files in binary: smaller, faster to\nwrite and read (default ASCII, which any tool reads and a diff shows)", o.binary);
   bool* surface = &o.surface;
@@ -77,14 +76,10 @@ checkOptions (const OptionParser& p, const std::vector<std::string>& inputs, Opt
   if (inputs.size () > 1)
     return p.usageError ("more than one input file ('" + inputs[0] + "', '" + inputs[1] + "')");
   o.input = inputs[0];
-  const pcl_flowseg::FlowParameters& params = o.params;
-  if (params.interior.viewpoint && o.use_sensor_origin)
-    return p.usageError ("--viewpoint and --use-sensor-origin exclude each other");
-  if (!params.interior.separate && (o.use_normals || params.interior.viewpoint || o.use_sensor_origin ||
-                                    params.features != pcl_flowseg::FeatureSide::Interior))
-    return p.usageError ("--no-interior excludes --features, --use-normals, --viewpoint and --use-sensor-origin");
-  if (const pcl_flowseg::Status s = pcl_flowseg::checkParameters (params); !s)
-    return p.usageError (s.message);
+  if (!o.params.interior.separate && o.use_normals)
+    return p.usageError ("--no-separate-interior excludes --use-normals");
+  if (const int status = flowseg_app::checkViewpointOptions (p, o.params, o.use_sensor_origin); status != flowseg_app::kContinue)
+    return status;
   if (o.prefix.empty ())
   {
     const std::size_t slash = o.input.find_last_of ('/'), dot = o.input.find_last_of ('.');
@@ -170,6 +165,9 @@ main (int argc, char** argv)
   if (o.quiet)
     pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
 
+  if (o.use_sensor_origin && !pcl_flowseg::carriesSensorOrigin (o.input))
+    return parser.failure (o.input + ": --use-sensor-origin given, but the file carries no sensor origin (only PCD files "
+                                     "do, in their VIEWPOINT line)");
   const auto t0 = std::chrono::steady_clock::now ();
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud (new pcl::PointCloud<pcl::PointNormal>);
   bool has_normals = false;

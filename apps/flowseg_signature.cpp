@@ -10,6 +10,8 @@
 #include <pcl_flowseg/io/json_text.h>
 #include <pcl_flowseg/signature/shape_signature.h>
 
+#include <pcl/console/print.h>
+
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -142,7 +144,7 @@ main (int argc, char** argv)
   flowseg_app::relaunchWithHugePageMalloc (argv);
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
-  bool json = false;
+  bool json = false, quiet = false;
   flowseg_app::OptionParser p ("flowseg_signature", "flowseg_signature INPUT [options]",
                                "Prints the shape's significant features as weighted points in the normalised frame (positions\n"
                                "relative to the interior's centroid, in units of interior volume^(1/d); weights sum to 1), then its\n"
@@ -150,15 +152,22 @@ main (int argc, char** argv)
                                "distance from the shape's sources, in the same unit) and the thickness, inner- and\n"
                                "solid-distance distributions (32 bins each).");
   flowseg_app::addSegmentationOptions (p, params);
+  flowseg_app::addViewpointOptions (p, params.interior.viewpoint, signature.input.use_sensor_origin);
   flowseg_app::addSignatureOptions (p, signature);
   flowseg_app::addThreadsOption (p, params.execution.threads);
   p.flag ("--json", "print JSON instead of a table", json);
+  p.flag ("-q, --quiet", "no messages on stderr but errors", quiet);
   p.epilogue ("Exit status: 0 success, 1 unreadable or unsegmentable input, 2 bad options.");
   std::vector<std::string> inputs;
   if (const int status = p.parse (argc, argv, inputs); status != flowseg_app::kContinue)
     return status;
   if (inputs.size () != 1)
     return p.usageError (inputs.empty () ? "no input file given" : "more than one input");
+  if (const int status = flowseg_app::checkViewpointOptions (p, params, signature.input.use_sensor_origin);
+      status != flowseg_app::kContinue)
+    return status;
+  if (quiet)
+    pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
   pcl_flowseg::Signature s;
   if (const pcl_flowseg::Status st = pcl_flowseg::signatureOfShapeFile (inputs[0], signature.input, params, signature.significance, s); !st)
     return p.failure (st.message);

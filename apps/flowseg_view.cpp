@@ -18,6 +18,9 @@
 #include <pcl/console/print.h>
 #include <pcl/visualization/pcl_visualizer.h>
 
+#include <vtkLogger.h>
+#include <vtkObject.h>
+
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -39,7 +42,7 @@ struct Options
   flowseg_app::SignatureOptions signature;
   std::string screenshot, size = "900x700";
   double point_size = 3;
-  bool surface = false;
+  bool surface = false, quiet = false;
   std::optional<Eigen::Vector3d> view;
   int width = 900, height = 700;
 };
@@ -53,6 +56,7 @@ makeParser (Options& o)
                   "INPUT: any file flowseg_segment reads, a mesh (sampled) or a silhouette image.");
   o.signature.input.mesh_points = 20000; // a picture wants more points than a signature
   flowseg_app::addSegmentationOptions (p, o.params);
+  flowseg_app::addViewpointOptions (p, o.params.interior.viewpoint, o.signature.input.use_sensor_origin);
   flowseg_app::addSignatureOptions (p, o.signature);
   p.flag ("--surface", "draw the reconstructed surface as a wireframe", o.surface);
   p.number ("--point-size", "P", "rendered point size in pixels, 1 to 50", o.point_size, [] (double v) {
@@ -61,6 +65,8 @@ makeParser (Options& o)
   p.text ("--size", "WxH", "window / screenshot size, 64 to 8192 pixels a side", o.size);
   p.point ("--view", "camera direction from the shape's centre (default: along the shape's\nthinnest principal axis, longest axis up; 2D: from above)", o.view);
   p.text ("--screenshot", "FILE", "render off-screen to FILE (.png) and exit (use xvfb-run without a display)", o.screenshot);
+  flowseg_app::addThreadsOption (p, o.params.execution.threads);
+  p.flag ("-q, --quiet", "no summary on stderr", o.quiet);
   p.epilogue ("Exit status: 0 success, 1 unreadable or unsegmentable input, 2 bad options.");
   return p;
 }
@@ -77,7 +83,7 @@ checkOptions (const OptionParser& p, const std::vector<std::string>& inputs, Opt
     return p.usageError ("--view needs a direction, not 0,0,0");
   if (!o.screenshot.empty () && (o.screenshot.size () < 4 || o.screenshot.substr (o.screenshot.size () - 4) != ".png"))
     return p.usageError ("--screenshot needs a .png file name");
-  return flowseg_app::kContinue;
+  return flowseg_app::checkViewpointOptions (p, o.params, o.signature.input.use_sensor_origin);
 }
 
 /** Every input point in the colour of its feature; points of no feature grey. */
@@ -202,10 +208,18 @@ main (int argc, char** argv)
   if (const int status = checkOptions (parser, inputs, o); status != flowseg_app::kContinue)
     return status;
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
+  if (o.quiet) // VTK's warnings too (deprecations, under xvfb); its errors still show
+  {
+    vtkObject::GlobalWarningDisplayOff ();
+    vtkLogger::SetStderrVerbosity (vtkLogger::VERBOSITY_ERROR);
+  }
 
   std::vector<Eigen::Vector3d> pts;
-  if (const pcl_flowseg::Status s = pcl_flowseg::loadShapeSample (inputs[0], o.signature.input, pts); !s)
+  std::optional<Eigen::Vector3d> origin;
+  if (const pcl_flowseg::Status s = pcl_flowseg::loadShapeSample (inputs[0], o.signature.input, pts, &origin); !s)
     return parser.failure (s.message);
+  if (o.signature.input.use_sensor_origin)
+    o.params.interior.viewpoint = origin;
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
   for (const auto& p : pts)
     cloud->push_back (pcl::PointXYZ (static_cast<float> (p.x ()), static_cast<float> (p.y ()), static_cast<float> (p.z ())));
@@ -230,8 +244,9 @@ main (int argc, char** argv)
   if (o.surface && r.interior.computed && r.dimension == 3)
     addSurface (viewer, r);
   placeCamera (viewer, pts, r.dimension, o.view);
-  std::cerr << r.dimension << "D: " << cloud->size () << " points, " << r.features.size () << " features, " << spheres
-            << " shown as spheres (volume share above " << o.signature.significance << ")\n";
+  if (!o.quiet)
+    std::cerr << r.dimension << "D: " << cloud->size () << " points, " << r.features.size () << " features, " << spheres
+              << " shown as spheres (volume share above " << o.signature.significance << ")\n";
   if (!offscreen)
   {
     viewer.spin ();
@@ -241,6 +256,7 @@ main (int argc, char** argv)
   viewer.saveScreenshot (o.screenshot);
   if (!std::ifstream (o.screenshot).good ())
     return parser.failure ("could not write " + o.screenshot + " (is there an X display? try xvfb-run)");
-  std::cerr << "wrote " << o.screenshot << "\n";
+  if (!o.quiet)
+    std::cerr << "wrote " << o.screenshot << "\n";
   return flowseg_app::kExitSuccess;
 }

@@ -309,6 +309,106 @@ if [ -x "$build/apps/flowseg_view" ]; then
   fi
 fi
 
+# --- single-view scans: every app that segments takes the viewpoint --------------------------
+# Two balls side by side (radii 1 and 0.6, 32 x 16 quads each), scanned by flowseg_sample: from
+# the viewpoint the balls are two parts, the hidden side guessed; without it one closed shell.
+awk 'BEGIN {
+  A = 32; D = 16; pi = atan2(0, -1); nv = (D + 1) * A; nf = D * A * 2;
+  print "OFF"; print 2 * nv, 2 * nf, 0;
+  for (b = 0; b < 2; b++) {
+    r = b ? 0.6 : 1; cx = b ? 1.5 : 0;
+    for (i = 0; i <= D; i++) for (j = 0; j < A; j++) {
+      t = pi * i / D; f = 2 * pi * j / A;
+      printf "%.6f %.6f %.6f\n", cx + r * sin(t) * cos(f), r * sin(t) * sin(f), r * cos(t);
+    }
+  }
+  for (b = 0; b < 2; b++) for (i = 0; i < D; i++) for (j = 0; j < A; j++) {
+    o = b * nv; a = o + i * A + j; c = o + (i + 1) * A + j; d = o + (i + 1) * A + (j + 1) % A; e = o + i * A + (j + 1) % A;
+    print 3, a, c, d; print 3, a, d, e;
+  }
+}' > "$work/balls.off"
+vp=0.5,0,12
+expect "scan a mesh" 0 "a scan of 2048 faces" -- "$smp" "$work/balls.off" --scan-from $vp -n 3000 -o "$work/scan.pcd"
+grep -q '^VIEWPOINT 0.5 0 12 1 0 0 0$' "$work/scan.pcd"; check "the scan's PCD carries the viewpoint" $?
+mkdir -p "$work/scans/front" "$work/scans/above"
+for from in 0.5,0,12 -0.5,1,12; do "$smp" "$work/balls.off" --scan-from $from -n 3000 -o "$work/scans/front/$from.pcd" -q; done
+for from in 0,12,1 1,12,0; do "$smp" "$work/balls.off" --scan-from $from -n 3000 -o "$work/scans/above/$from.pcd" -q; done
+awk '/^DATA/ { d = 1; next } d' "$work/scan.pcd" > "$work/scan.xyz"
+mkdir -p "$work/xyz_scans/front" && cp "$work/scan.xyz" "$work/xyz_scans/front/"
+sig_plain=$("$sig" "$work/scan.pcd" --json)
+for how in "--use-sensor-origin" "--viewpoint $vp"; do
+  # shellcheck disable=SC2086 # $how is two words for --viewpoint
+  expect "segment a scan ($how)" 0 "[1-9][0-9]* vertices guessed on the hidden side" -- "$seg" "$work/scan.pcd" $how -o "$work/scan_seg"
+  grep -q '"viewpoint": \[0.5, 0, 12\]' "$work/scan_seg.json" && grep -q '"hidden_side_vertices": [1-9]' "$work/scan_seg.json"
+  check "segment a scan ($how): the JSON has the viewpoint and the hidden side" $?
+  expect "signature of a scan ($how)" 0 "2 significant features" -- "$sig" "$work/scan.pcd" $how
+  [ "$("$sig" "$work/scan.pcd" --json $how)" != "$sig_plain" ]; check "signature of a scan ($how) differs from the one without viewpoint" $?
+  expect "match a scan ($how)" 0 "A: 2 parts, B: 2" -- "$mat" "$work/scan.pcd" "$work/scans/front/0.5,0,12.pcd" $how
+  expect "db build from scans ($how)" 0 "4 shapes" -- "$db" build "$work/scans.db" "$work/scans" $how
+  expect "db query a scan ($how)" 0 "^1	1.0000	0.0000	front	front/0.5,0,12.pcd" -- "$db" query "$work/scans.db" "$work/scan.pcd" $how
+  expect "db add a scan ($how)" 0 "5 shapes" -- "$db" add "$work/scans.db" "$work/scan.pcd" --label scan $how
+  expect "eval scans ($how)" 0 "flowseg.*NN" -- "$ev" "$work/scans" -o "$work/scans_eval" --methods flowseg,parts $how
+done
+"$db" build "$work/scans_plain.db" "$work/scans" -q
+"$db" build "$work/scans_own.db" "$work/scans" -q --use-sensor-origin
+[ "$("$db" list "$work/scans_own.db" | grep -c '	2 features	2 parts')" -eq 4 ]; check "db: each scan from its own viewpoint has two parts" $?
+! cmp -s "$work/scans_plain.db" "$work/scans_own.db"; check "db: scans segmented from their own viewpoints give other signatures" $?
+"$ev" "$work/scans" -o "$work/scans_eval_plain" --methods parts -q >/dev/null
+"$ev" "$work/scans" -o "$work/scans_eval_own" --methods parts -q --use-sensor-origin >/dev/null
+! cmp -s "$work/scans_eval_plain/similarity_parts.csv" "$work/scans_eval_own/similarity_parts.csv"
+check "eval: scans segmented from their own viewpoints compare otherwise" $?
+if [ -x "$build/apps/flowseg_view" ] && command -v xvfb-run >/dev/null 2>&1; then
+  for how in "--use-sensor-origin" "--viewpoint $vp"; do
+    expect "view a scan ($how)" 0 "3000 points, 2 features" -- xvfb-run -a -s "-screen 0 1024x768x24" "$build/apps/flowseg_view" "$work/scan.pcd" $how --size 200x200 --screenshot "$work/scan.png"
+  done
+else
+  echo "SKIPPED: view a scan (flowseg_view or xvfb-run is missing)"
+fi
+scan_apps=(flowseg_segment flowseg_signature flowseg_match flowseg_db flowseg_eval)
+[ -x "$build/apps/flowseg_view" ] && scan_apps+=(flowseg_view)
+for app in "${scan_apps[@]}"; do
+  case $app in
+    flowseg_match) args=("$work/scan.pcd" "$work/scan.pcd") no_origin=("$work/scan.pcd" "$work/scan.xyz") ;;
+    flowseg_db) args=(query "$work/scans_own.db" "$work/scan.pcd") no_origin=(query "$work/scans_own.db" "$work/scan.xyz") ;;
+    flowseg_eval) args=("$work/scans" -o "$work/scans_eval2") no_origin=("$work/xyz_scans" -o "$work/scans_eval3" --methods parts) ;;
+    flowseg_view) args=("$work/scan.pcd" --screenshot "$work/x.png") no_origin=("$work/balls.off" --screenshot "$work/x.png") ;;
+    flowseg_segment) args=("$work/scan.pcd" -o "$work/x") no_origin=("$work/scan.xyz" -o "$work/x") ;;
+    *) args=("$work/scan.pcd") no_origin=("$work/scan.xyz") ;;
+  esac
+  expect "$app: --viewpoint with --use-sensor-origin refused" 2 "--viewpoint and --use-sensor-origin exclude each other" -- "$build/apps/$app" "${args[@]}" --viewpoint $vp --use-sensor-origin
+  expect "$app: --no-interior with --use-sensor-origin refused" 2 "--no-separate-interior excludes" -- "$build/apps/$app" "${args[@]}" --no-interior --use-sensor-origin
+  expect "$app: --use-sensor-origin on a file without one" 1 "carries no sensor origin" -- "$build/apps/$app" "${no_origin[@]}" --use-sensor-origin
+  "$build/apps/$app" --help | grep -q -- "--viewpoint X,Y,Z  sensor position of a single-view scan"; check "$app documents --viewpoint" $?
+done
+
+# --- every app takes -h and -q; every app that segments takes -j ----------------------------------
+all_apps=(flowseg_segment flowseg_sample flowseg_make_samples flowseg_signature flowseg_match flowseg_db flowseg_eval)
+[ -x "$build/apps/flowseg_view" ] && all_apps+=(flowseg_view)
+for app in "${all_apps[@]}"; do
+  expect "$app -h" 0 "^Usage: $app" -- "$build/apps/$app" -h
+  "$build/apps/$app" --help | grep -qE '^  -q, --quiet '; check "$app takes -q" $?
+done
+for app in "${scan_apps[@]}"; do
+  "$build/apps/$app" --help | grep -q -- "-j, --threads N        worker threads: 0 = all cores, 1 = sequential; the result is the same for"
+  check "$app takes -j, --threads" $?
+done
+quiet_run() { # name, command...: exit 0 and nothing on stderr
+  local name=$1
+  shift
+  "$@" >/dev/null 2>"$work/quiet.err"
+  [ $? -eq 0 ] && [ ! -s "$work/quiet.err" ]; check "$name -q: exit 0, nothing on stderr" $?
+}
+quiet_run flowseg_segment "$seg" "$work/scan.pcd" -o "$work/q" -q
+quiet_run flowseg_signature "$sig" "$work/scan.pcd" -q
+quiet_run flowseg_match "$mat" "$work/scan.pcd" "$work/scan.pcd" -q
+quiet_run flowseg_db "$db" query "$work/scans_own.db" "$work/scan.pcd" -q
+quiet_run flowseg_eval "$ev" "$work/scans" -o "$work/scans_eval4" --methods parts -q
+quiet_run flowseg_sample "$smp" "$work/balls.off" -n 100 -o "$work/q.pcd" -q
+quiet_run flowseg_make_samples "$gen" -o "$work/q_samples" --points2d 100 --points3d 100 -q
+if [ -x "$build/apps/flowseg_view" ] && command -v xvfb-run >/dev/null 2>&1; then
+  quiet_run flowseg_view xvfb-run -a -s "-screen 0 1024x768x24" "$build/apps/flowseg_view" "$work/scan.pcd" --size 200x200 --screenshot "$work/q.png" -q
+fi
+
 # --- the documentation holds every app's own --help -------------------------------------------
 if [ -x "$build/apps/flowseg_view" ]; then
   bash "$src/scripts/update_app_docs.sh" "$build" "$work/apps.md"

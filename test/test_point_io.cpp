@@ -28,6 +28,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -517,6 +518,48 @@ TEST (PointIO, ShapeInputOptionsAreChecked)
   EXPECT_FALSE (checkShapeInputOptions (o));
   o.mesh_points = 100000001;
   EXPECT_FALSE (checkShapeInputOptions (o));
+}
+
+TEST (PointIO, ShapeSamplesGiveTheSensorOriginOfTheFilesThatCarryOne)
+{
+  TempDir dir;
+  pcl::PointCloud<pcl::PointXYZ> scan;
+  for (int i = 0; i < 4; ++i)
+    scan.push_back (pcl::PointXYZ (i == 1, i == 2, i == 3));
+  scan.sensor_origin_ = Eigen::Vector4f (4, 5, 6, 0);
+  ASSERT_TRUE (writePointCloud (dir.file ("scan.pcd"), scan, false));
+  ShapeInputOptions o;
+  std::vector<Eigen::Vector3d> pts;
+  std::optional<Eigen::Vector3d> origin;
+  ASSERT_TRUE (loadShapeSample (dir.file ("scan.pcd"), o, pts, &origin));
+  EXPECT_EQ (pts.size (), 4u);
+  ASSERT_TRUE (origin.has_value ());
+  EXPECT_EQ (*origin, Eigen::Vector3d (4, 5, 6));
+  o.use_sensor_origin = true; // the same: a PCD file carries one
+  origin.reset ();
+  ASSERT_TRUE (loadShapeSample (dir.file ("scan.pcd"), o, pts, &origin));
+  EXPECT_EQ (origin, Eigen::Vector3d (4, 5, 6));
+  EXPECT_TRUE (carriesSensorOrigin ("a/B.PCD"));
+
+  // Text, PLY and meshes carry none: none is given, and asking for one fails, naming the file.
+  const std::string xyz = dir.write ("scan.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  const std::string off = dir.write ("tet.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  for (const std::string& path : {xyz, off})
+  {
+    EXPECT_FALSE (carriesSensorOrigin (path));
+    o.use_sensor_origin = false;
+    origin = Eigen::Vector3d (1, 1, 1);
+    ASSERT_TRUE (loadShapeSample (path, o, pts, &origin)) << path;
+    EXPECT_FALSE (pts.empty ());
+    EXPECT_FALSE (origin.has_value ()) << path;
+    o.use_sensor_origin = true;
+    const Status refused = loadShapeSample (path, o, pts, &origin);
+    EXPECT_FALSE (refused.ok) << path;
+    EXPECT_NE (refused.message.find (path + ": the file carries no sensor origin"), std::string::npos) << refused.message;
+    EXPECT_TRUE (pts.empty ());
+    EXPECT_FALSE (origin.has_value ());
+  }
+  EXPECT_FALSE (carriesSensorOrigin ("scan.ply"));
 }
 
 TEST (ResultWriter, JsonTextIsEscapedAndTextFilesAreAtomic)

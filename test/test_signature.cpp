@@ -4,6 +4,8 @@
  */
 #include "test_support.h"
 
+#include <pcl_flowseg/io/point_cloud_writer.h>
+#include <pcl_flowseg/io/range_scan.h>
 #include <pcl_flowseg/signature/feature_signature.h>
 #include <pcl_flowseg/signature/shape_signature.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
@@ -12,7 +14,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <map>
+#include <unistd.h>
 
 using namespace pcl_flowseg;
 using V = Eigen::Vector3d;
@@ -41,6 +46,70 @@ paperMatcher ()
   pcl::SignatureMatcher matcher;
   matcher.setMethod (MatchMethod::Paper);
   return matcher;
+}
+
+/** Two balls side by side (radii 1 and 0.6, 32 x 16 quads each): two parts, both seen from the
+  * front and from above. */
+TriangleMesh
+twoBalls ()
+{
+  TriangleMesh mesh;
+  constexpr int kAround = 32, kDown = 16;
+  for (const auto& [centre, radius] : {std::pair<V, double> (V::Zero (), 1.0), std::pair<V, double> (V (1.5, 0, 0), 0.6)})
+  {
+    const int base = static_cast<int> (mesh.vertices.size ());
+    for (int i = 0; i <= kDown; ++i)
+      for (int j = 0; j < kAround; ++j)
+      {
+        const double theta = M_PI * i / kDown, phi = 2.0 * M_PI * j / kAround;
+        mesh.vertices.push_back (centre + radius * V (std::sin (theta) * std::cos (phi), std::sin (theta) * std::sin (phi), std::cos (theta)));
+      }
+    const auto at = [&] (int i, int j) { return base + i * kAround + (j % kAround); };
+    for (int i = 0; i < kDown; ++i)
+      for (int j = 0; j < kAround; ++j)
+      {
+        mesh.faces.push_back ({at (i, j), at (i + 1, j), at (i + 1, j + 1)});
+        mesh.faces.push_back ({at (i, j), at (i + 1, j + 1), at (i, j + 1)});
+      }
+  }
+  return mesh;
+}
+
+/** A scan of \a mesh from \a sensor written to \a path: a PCD file carries the sensor as its
+  * VIEWPOINT, any other format (.xyz) only the points. */
+void
+writeScan (const TriangleMesh& mesh, const V& sensor, const std::string& path)
+{
+  RangeScanOptions o;
+  o.viewpoint = sensor;
+  o.points = 3000;
+  std::vector<V> pts;
+  ASSERT_TRUE (scanMesh (mesh, o, pts));
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (const V& p : pts)
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (p.x ()), static_cast<float> (p.y ()), static_cast<float> (p.z ())));
+  cloud.sensor_origin_ = Eigen::Vector4f (static_cast<float> (sensor.x ()), static_cast<float> (sensor.y ()),
+                                          static_cast<float> (sensor.z ()), 0.0f);
+  if (path.size () > 4 && path.substr (path.size () - 4) == ".pcd")
+  {
+    ASSERT_TRUE (writePointCloud (path, cloud, false));
+    return;
+  }
+  std::ofstream out (path);
+  for (const auto& p : cloud)
+    out << p.x << " " << p.y << " " << p.z << "\n";
+}
+
+void
+expectSameSignature (const Signature& a, const Signature& b, const std::string& what)
+{
+  EXPECT_EQ (a.interior_volume, b.interior_volume) << what;
+  ASSERT_EQ (a.points.size (), b.points.size ()) << what;
+  for (std::size_t k = 0; k < a.points.size (); ++k)
+  {
+    EXPECT_EQ (a.points[k].position, b.points[k].position) << what;
+    EXPECT_EQ (a.points[k].weight, b.points[k].weight) << what;
+  }
 }
 
 } // namespace
@@ -268,4 +337,48 @@ TEST (Signature, ManyFilesInParallelEqualOneByOne)
       EXPECT_EQ (one.points[k].weight, signatures[i].points[k].weight);
     }
   }
+}
+
+TEST (Signature, EachScanFileSegmentedFromItsOwnSensorOrigin)
+{
+  char folder[] = "/tmp/flowseg_scans_XXXXXX";
+  ASSERT_NE (::mkdtemp (folder), nullptr);
+  const std::string dir = folder;
+  const TriangleMesh mesh = twoBalls ();
+  const std::vector<V> sensors = {V (0.5, 0, 12), V (0, 12, 1)}; // exact in the PCD's floats
+  const std::vector<std::string> paths = {dir + "/front.pcd", dir + "/above.pcd"};
+  for (std::size_t i = 0; i < paths.size (); ++i)
+    writeScan (mesh, sensors[i], paths[i]);
+  writeScan (mesh, sensors[0], dir + "/front.xyz");
+
+  ShapeInputOptions own;
+  own.use_sensor_origin = true;
+  const FlowParameters plain;
+  std::vector<Signature> signatures;
+  std::vector<Status> statuses;
+  signaturesOfShapeFiles (paths, own, plain, kDefaultSignificance, 2, signatures, statuses);
+  for (std::size_t i = 0; i < paths.size (); ++i)
+  {
+    ASSERT_TRUE (statuses[i]) << statuses[i].message;
+    FlowParameters given;
+    given.interior.viewpoint = sensors[i];
+    Signature explicit_viewpoint, none;
+    ASSERT_TRUE (signatureOfShapeFile (paths[i], ShapeInputOptions (), given, kDefaultSignificance, explicit_viewpoint));
+    expectSameSignature (signatures[i], explicit_viewpoint, paths[i]);
+    // Without the viewpoint the seen shells close into one part; from it the balls are two.
+    ASSERT_TRUE (signatureOfShapeFile (paths[i], ShapeInputOptions (), plain, kDefaultSignificance, none));
+    EXPECT_GE (signatures[i].points.size (), 2u) << paths[i];
+    EXPECT_NE (signatures[i].interior_volume, none.interior_volume) << paths[i];
+  }
+
+  Signature s;
+  const Status no_origin = signatureOfShapeFile (dir + "/front.xyz", own, plain, kDefaultSignificance, s);
+  EXPECT_FALSE (no_origin.ok);
+  EXPECT_NE (no_origin.message.find (dir + "/front.xyz: the file carries no sensor origin"), std::string::npos) << no_origin.message;
+  FlowParameters given;
+  given.interior.viewpoint = sensors[0];
+  const Status both = signatureOfShapeFile (paths[0], own, given, kDefaultSignificance, s);
+  EXPECT_FALSE (both.ok);
+  EXPECT_NE (both.message.find ("exclude each other"), std::string::npos) << both.message;
+  std::system (("rm -rf '" + dir + "'").c_str ());
 }

@@ -143,7 +143,8 @@ addSignatureOptions (OptionParser& p, SignatureOptions& o)
 {
   const auto& table = pcl_flowseg::signatureParameterTable ();
   for (const auto& spec : table.specs)
-    addTableOption (p, table, spec.info.name, o);
+    if (spec.info.name != "use_sensor_origin") // addViewpointOptions, beside --viewpoint
+      addTableOption (p, table, spec.info.name, o);
 }
 
 void
@@ -178,6 +179,39 @@ addMatchMethodOption (OptionParser& p, pcl_flowseg::MatchParameters& match)
             "parts, thickness, inner, solid, inner-profile, thickness-profile, contour (2D only),\n"
             "inner-context",
             match.method, choices);
+}
+
+void
+addViewpointOptions (OptionParser& p, std::optional<Eigen::Vector3d>& viewpoint, bool& use_sensor_origin)
+{
+  const auto* point = pcl_flowseg::findParameter (pcl_flowseg::flowParameterTable (), "viewpoint");
+  std::optional<Eigen::Vector3d>* v = &viewpoint;
+  p.custom (optionNames (point->info, point->info.name, false), valueName (point->info), helpText (point->info), "",
+            [v] (const std::string& used, const std::string& text) {
+              const pcl_flowseg::Status s = text.empty () ? pcl_flowseg::Status::error ("needs X,Y,Z")
+                                                          : pcl_flowseg::parsePoint (text, *v);
+              return s ? std::string () : used + ": viewpoint " + s.message;
+            });
+  const auto* origin = pcl_flowseg::findParameter (pcl_flowseg::signatureParameterTable (), "use_sensor_origin");
+  bool* use = &use_sensor_origin;
+  p.custom (optionNames (origin->info, origin->info.name, false), "", helpText (origin->info), use_sensor_origin ? "on" : "off",
+            [use] (const std::string& used, const std::string&) {
+              *use = used.compare (0, 5, "--no-") != 0;
+              return std::string ();
+            });
+}
+
+int
+checkViewpointOptions (const OptionParser& p, const pcl_flowseg::FlowParameters& params, bool use_sensor_origin)
+{
+  if (params.interior.viewpoint && use_sensor_origin)
+    return p.usageError ("--viewpoint and --use-sensor-origin exclude each other");
+  if (!params.interior.separate &&
+      (params.interior.viewpoint || use_sensor_origin || params.features != pcl_flowseg::FeatureSide::Interior))
+    return p.usageError ("--no-separate-interior excludes --features, --viewpoint and --use-sensor-origin");
+  if (const pcl_flowseg::Status s = pcl_flowseg::checkParameters (params); !s)
+    return p.usageError (s.message);
+  return kContinue;
 }
 
 } // namespace flowseg_app

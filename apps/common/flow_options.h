@@ -45,4 +45,15 @@ addMatchOptions (OptionParser& parser, pcl_flowseg::MatchParameters& match);
 void
 addMatchMethodOption (OptionParser& parser, pcl_flowseg::MatchParameters& match);
 
+/** \brief --viewpoint X,Y,Z and --use-sensor-origin: the sensor position of a single-view scan,
+  * given or taken from the PCD file's VIEWPOINT. */
+void
+addViewpointOptions (OptionParser& parser, std::optional<Eigen::Vector3d>& viewpoint, bool& use_sensor_origin);
+
+/** \brief What single options cannot check: --viewpoint and --use-sensor-origin exclude each other,
+  * --no-interior excludes them and --features; then the library's checkParameters.
+  * \return kContinue, or kExitUsage after reporting the error. */
+int
+checkViewpointOptions (const OptionParser& parser, const pcl_flowseg::FlowParameters& params, bool use_sensor_origin);
+
 } // namespace flowseg_app

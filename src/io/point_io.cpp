@@ -258,6 +258,12 @@ isSupportedPointFile (const std::string& path)
   return ext == "pcd" || ext == "ply" || ext == "xyz" || ext == "txt" || ext == "csv" || ext == "off" || ext == "obj";
 }
 
+bool
+carriesSensorOrigin (const std::string& path)
+{
+  return detail::lowerExtension (path) == "pcd";
+}
+
 Status
 loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
 {

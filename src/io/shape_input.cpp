@@ -34,11 +34,19 @@ isShapeFile (const std::string& path)
 }
 
 Status
-loadShapeSample (const std::string& path, const ShapeInputOptions& options, std::vector<Eigen::Vector3d>& points)
+loadShapeSample (const std::string& path, const ShapeInputOptions& options, std::vector<Eigen::Vector3d>& points,
+                 std::optional<Eigen::Vector3d>* sensor_origin)
 {
   points.clear ();
+  if (sensor_origin)
+    sensor_origin->reset ();
   if (const Status o = checkShapeInputOptions (options); !o)
     return o;
+  // Checked before reading: a mesh or an image is not a single view from a known place.
+  const bool has_origin = carriesSensorOrigin (path);
+  if (options.use_sensor_origin && !has_origin)
+    return Status::error (path + ": the file carries no sensor origin to take the viewpoint from (only PCD files do, "
+                                 "in their VIEWPOINT line)");
   const std::string ext = detail::lowerExtension (path);
   if (isSilhouetteFile (path))
   {
@@ -70,6 +78,8 @@ loadShapeSample (const std::string& path, const ShapeInputOptions& options, std:
   points.reserve (cloud.size ());
   for (const auto& p : cloud)
     points.emplace_back (p.x, p.y, p.z);
+  if (sensor_origin && has_origin)
+    *sensor_origin = cloud.sensor_origin_.head<3> ().cast<double> ();
   return Status::success ();
 }
 

@@ -15,10 +15,17 @@ signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, c
                       double significance, Signature& signature)
 {
   std::vector<Eigen::Vector3d> points;
+  std::optional<Eigen::Vector3d> origin;
   FlowResult result;
-  Status s = loadShapeSample (path, input, points);
+  Status s = input.use_sensor_origin && params.interior.viewpoint
+                 ? Status::error ("a viewpoint and the file's sensor origin exclude each other")
+                 : loadShapeSample (path, input, points, &origin);
+  // Each file's own viewpoint: a collection of scans has as many as it has files.
+  FlowParameters own = params;
+  if (input.use_sensor_origin)
+    own.interior.viewpoint = origin;
   if (s.ok)
-    s = runFlowSegmentation (points, params, result);
+    s = runFlowSegmentation (points, own, result);
   if (s.ok)
     s = signatureFromSegmentation (result, significance, signature);
   if (!s.ok && s.message.find (path) == std::string::npos)

@@ -35,6 +35,9 @@ signatureParameterTable ()
                                                        "seed of the sampling on meshes"},
                                                       [] (SP& p) -> std::uint32_t& { return p.input.seed; },
                                                       std::numeric_limits<std::uint32_t>::max ()));
+    t.specs.push_back (switchField<SP> ({"use_sensor_origin", "", "input", ParameterType::Switch, "", "true, false",
+                                         "the viewpoint of a single-view scan is each PCD file's own sensor origin (VIEWPOINT)"},
+                                        [] (SP& p) -> bool& { return p.input.use_sensor_origin; }));
     t.check = [] (const SP& p) { return checkSignatureParameters (p); };
     return t;
   }();

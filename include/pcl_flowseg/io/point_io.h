@@ -42,4 +42,10 @@ loadPointCloud (const std::string& path, pcl::PointCloud<pcl::PointNormal>& clou
 bool
 isSupportedPointFile (const std::string& path);
 
+/** \brief True when files like \a path carry a sensor origin (the viewpoint of a single-view
+  * scan): PCD files, by their VIEWPOINT (0 0 0 when the header has none, as the format says).
+  * The others (PLY, text, meshes) carry none, and their cloud's sensor_origin_ means nothing. */
+bool
+carriesSensorOrigin (const std::string& path);
+
 } // namespace pcl_flowseg

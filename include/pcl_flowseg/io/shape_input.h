@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct ShapeInputOptions
 {
   std::size_t mesh_points = 5000; ///< points sampled on a mesh's faces (area-uniform; 4 to 10^8)
   std::uint32_t seed = 1;          ///< sampling seed
+  /** Point files: the viewpoint of a single-view scan is the file's sensor origin (PCD VIEWPOINT);
+    * reading a file that carries none (meshes, PLY, text, images) then fails. */
+  bool use_sensor_origin = false;
 };
 
 /** \brief Why \a options cannot be used, or success. */
@@ -31,9 +35,13 @@ bool
 isShapeFile (const std::string& path);
 
 /** \brief Reads a shape as points: meshes (.off, .obj, and .ply files with faces) are sampled on
-  * their faces, point files are read as they are, silhouette images give their boundary (2D). */
+  * their faces, point files are read as they are, silhouette images give their boundary (2D).
+  * \param[out] sensor_origin (optional) the file's sensor origin, or none when the file carries
+  *             none (see carriesSensorOrigin); with options.use_sensor_origin such a file fails,
+  *             with a message naming it. */
 Status
-loadShapeSample (const std::string& path, const ShapeInputOptions& options, std::vector<Eigen::Vector3d>& points);
+loadShapeSample (const std::string& path, const ShapeInputOptions& options, std::vector<Eigen::Vector3d>& points,
+                 std::optional<Eigen::Vector3d>* sensor_origin = nullptr);
 
 /** \brief The shape files below \a root (recursively, sorted), as paths relative to \a root. */
 Status

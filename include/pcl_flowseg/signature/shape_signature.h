@@ -16,7 +16,9 @@
 namespace pcl_flowseg {
 
 /** \brief The signature of a shape file (anything loadShapeSample reads): sample, segment with
-  * \a params, keep the features above \a significance. The message names the file on failure. */
+  * \a params, keep the features above \a significance. With input.use_sensor_origin the file's
+  * own sensor origin is the viewpoint (params.interior.viewpoint must then be unset). The message
+  * names the file on failure. */
 Status
 signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
                       double significance, Signature& signature);
