@@ -156,6 +156,22 @@ expect "scan distance inside" 2 "scan-distance" -- "$smp" "$work/tet.off" --scan
 expect "depth noise model absurd" 2 "depth-noise-model" -- "$smp" "$work/tet.off" --scan-random --depth-noise-model square -o "$work/x.pcd"
 expect "scan from a point and at random" 2 "exclude each other" -- "$smp" "$work/tet.off" --scan-from 5,5,5 --single-view-protocol -o "$work/x.pcd"
 expect "scan options without a scan" 2 "need a scan" -- "$smp" "$work/tet.off" --scan-pixels 240 -o "$work/x.pcd"
+mkdir -p "$work/meshes/a" "$work/meshes/b"
+cp "$work/tet.off" "$work/meshes/a/1.off"
+cp "$work/tet.off" "$work/meshes/b/2.off"
+collect="$src/scripts/make_scan_collection.sh"
+expect "scan collection" 0 "wrote 2 scans .*: points min [0-9]+, median [0-9.]+, max [0-9]+" -- bash "$collect" "$work/meshes" "$work/scans" --build "$build"
+expect "scan collection with noise" 0 "wrote 2 scans" -- bash "$collect" "$work/meshes" "$work/scans_noisy" --noise 0.005 --build "$build"
+[ -f "$work/scans/a/1.pcd" ] && [ -f "$work/scans/b/2.pcd" ] && [ "$(wc -l < "$work/scans/scans.tsv")" = 3 ]; check "one scan per mesh, in its class folder, and the list of scans" $?
+one_seed=$(( (1 + $(printf '%s' a/1.off | cksum | cut -d' ' -f1)) % 4294967296 ))
+"$smp" "$work/meshes/a/1.off" --single-view-protocol --seed "$one_seed" -o "$work/one.pcd" 2>/dev/null
+cmp -s "$work/one.pcd" "$work/scans/a/1.pcd"; check "a collection scan's seed is the base seed plus the cksum of its relative path" $?
+[ "$(grep -m1 '^VIEWPOINT' "$work/scans/a/1.pcd")" = "$(grep -m1 '^VIEWPOINT' "$work/scans_noisy/a/1.pcd")" ] &&
+  [ "$(grep -m1 '^VIEWPOINT' "$work/scans/a/1.pcd")" != "$(grep -m1 '^VIEWPOINT' "$work/scans/b/2.pcd")" ]
+check "the noisy collection shares the clean one's viewpoints; two files, two viewpoints" $?
+expect "scan collection bad seed" 2 "seed" -- bash "$collect" "$work/meshes" "$work/x" --seed -1 --build "$build"
+expect "scan collection bad noise" 2 "noise" -- bash "$collect" "$work/meshes" "$work/x" --noise 2 --build "$build"
+expect "scan collection without meshes" 1 "no mesh" -- bash "$collect" "$work/scans" "$work/x" --build "$build"
 expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off" -n 2000 --outliers 0.02 -o "$work/out.pcd"
 expect "outliers found and left out" 0 "left out as outliers" -- "$seg" "$work/out.pcd" -o "$work/out"
 grep -q '"outlier_points": [1-9]' "$work/out.json"; check "the JSON counts the outliers" $?
