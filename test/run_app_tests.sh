@@ -134,6 +134,44 @@ expect "scan a mesh" 0 "a scan of" -- "$smp" "$work/tet.off" -n 300 --scan-from 
 expect "segment a scan from its sensor origin" 0 "noise: estimated sigma" -- "$seg" "$work/scan.pcd" --use-sensor-origin -o "$work/scan"
 expect "scan from inside the mesh" 1 "outside the mesh's bounding sphere" -- "$smp" "$work/tet.off" --scan-from 0.2,0.2,0.2 -o "$work/x.pcd"
 expect "scan viewpoint malformed" 2 "scan-from" -- "$smp" "$work/tet.off" --scan-from 1,2 -o "$work/x.pcd"
+expect "scan by the single-view protocol" 0 "a scan of .* 240 x 240 pixels, field of view 50 degrees, .* along each ray" -- "$smp" "$work/tet.off" --single-view-protocol --noise 0.005 --seed 3 -o "$work/proto.pcd"
+awk '/^VIEWPOINT/ { d = sqrt (($2 - 0.5) ^ 2 + ($3 - 0.5) ^ 2 + ($4 - 0.5) ^ 2); ok = $5 == 1 && d > 3.4640 && d < 3.4642 } END { exit !ok }' "$work/proto.pcd"
+check "the protocol's viewpoint, 2 diagonals from the box centre, is the PCD VIEWPOINT" $?
+n=$(grep -m1 '^POINTS' "$work/proto.pcd" | awk '{print $2}')
+[ "$n" -gt 100 ] && [ "$n" -le 57600 ]; check "a 240 x 240 scan has at most 57600 points ($n)" $?
+expect "the protocol spelt out" 0 "a scan of" -- "$smp" "$work/tet.off" --scan-random --scan-distance 2 --scan-pixels 240 --scan-fov 50 --depth-noise-model constant --noise 0.005 --seed 3 -o "$work/proto2.pcd"
+cmp -s "$work/proto.pcd" "$work/proto2.pcd"; check "--single-view-protocol is its options spelt out" $?
+expect "the protocol without noise" 0 "a scan of" -- "$smp" "$work/tet.off" --single-view-protocol --seed 3 -o "$work/proto0.pcd"
+[ "$(grep -m1 '^POINTS' "$work/proto0.pcd")" = "POINTS $n" ] && [ "$(grep -m1 '^VIEWPOINT' "$work/proto0.pcd")" = "$(grep -m1 '^VIEWPOINT' "$work/proto.pcd")" ]
+check "the same seed without noise: the same viewpoint and rays" $?
+expect "the protocol, another seed" 0 "a scan of" -- "$smp" "$work/tet.off" --single-view-protocol --seed 4 -o "$work/proto4.pcd"
+[ "$(grep -m1 '^VIEWPOINT' "$work/proto4.pcd")" != "$(grep -m1 '^VIEWPOINT' "$work/proto.pcd")" ]; check "another seed, another direction" $?
+expect "a camera scan from a given viewpoint" 0 "64 x 64 pixels, field of view 20 degrees" -- "$smp" "$work/tet.off" --scan-from 5,5,5 --scan-pixels 64 --scan-fov 20 -o "$work/cam.pcd"
+[ "$(grep -m1 '^VIEWPOINT' "$work/cam.pcd")" = "VIEWPOINT 5 5 5 1 0 0 0" ]; check "the camera scan's viewpoint is the PCD VIEWPOINT" $?
+[ "$(grep -m1 '^POINTS' "$work/cam.pcd" | awk '{print $2}')" -le 4096 ]; check "a 64 x 64 scan has at most 4096 points" $?
+expect "scan field of view 180" 2 "scan-fov" -- "$smp" "$work/tet.off" --single-view-protocol --scan-fov 180 -o "$work/x.pcd"
+expect "scan field of view negative" 2 "scan-fov" -- "$smp" "$work/tet.off" --single-view-protocol --scan-fov -5 -o "$work/x.pcd"
+expect "scan pixels absurd" 2 "scan-pixels" -- "$smp" "$work/tet.off" --single-view-protocol --scan-pixels 100000 -o "$work/x.pcd"
+expect "scan distance inside" 2 "scan-distance" -- "$smp" "$work/tet.off" --scan-random --scan-distance 0.4 -o "$work/x.pcd"
+expect "depth noise model absurd" 2 "depth-noise-model" -- "$smp" "$work/tet.off" --scan-random --depth-noise-model square -o "$work/x.pcd"
+expect "scan from a point and at random" 2 "exclude each other" -- "$smp" "$work/tet.off" --scan-from 5,5,5 --single-view-protocol -o "$work/x.pcd"
+expect "scan options without a scan" 2 "need a scan" -- "$smp" "$work/tet.off" --scan-pixels 240 -o "$work/x.pcd"
+mkdir -p "$work/meshes/a" "$work/meshes/b"
+cp "$work/tet.off" "$work/meshes/a/1.off"
+cp "$work/tet.off" "$work/meshes/b/2.off"
+collect="$src/scripts/make_scan_collection.sh"
+expect "scan collection" 0 "wrote 2 scans .*: points min [0-9]+, median [0-9.]+, max [0-9]+" -- bash "$collect" "$work/meshes" "$work/scans" --build "$build"
+expect "scan collection with noise" 0 "wrote 2 scans" -- bash "$collect" "$work/meshes" "$work/scans_noisy" --noise 0.005 --build "$build"
+[ -f "$work/scans/a/1.pcd" ] && [ -f "$work/scans/b/2.pcd" ] && [ "$(wc -l < "$work/scans/scans.tsv")" = 3 ]; check "one scan per mesh, in its class folder, and the list of scans" $?
+one_seed=$(( (1 + $(printf '%s' a/1.off | cksum | cut -d' ' -f1)) % 4294967296 ))
+"$smp" "$work/meshes/a/1.off" --single-view-protocol --seed "$one_seed" -o "$work/one.pcd" 2>/dev/null
+cmp -s "$work/one.pcd" "$work/scans/a/1.pcd"; check "a collection scan's seed is the base seed plus the cksum of its relative path" $?
+[ "$(grep -m1 '^VIEWPOINT' "$work/scans/a/1.pcd")" = "$(grep -m1 '^VIEWPOINT' "$work/scans_noisy/a/1.pcd")" ] &&
+  [ "$(grep -m1 '^VIEWPOINT' "$work/scans/a/1.pcd")" != "$(grep -m1 '^VIEWPOINT' "$work/scans/b/2.pcd")" ]
+check "the noisy collection shares the clean one's viewpoints; two files, two viewpoints" $?
+expect "scan collection bad seed" 2 "seed" -- bash "$collect" "$work/meshes" "$work/x" --seed -1 --build "$build"
+expect "scan collection bad noise" 2 "noise" -- bash "$collect" "$work/meshes" "$work/x" --noise 2 --build "$build"
+expect "scan collection without meshes" 1 "no mesh" -- bash "$collect" "$work/scans" "$work/x" --build "$build"
 expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off" -n 2000 --outliers 0.02 -o "$work/out.pcd"
 expect "outliers found and left out" 0 "left out as outliers" -- "$seg" "$work/out.pcd" -o "$work/out"
 grep -q '"outlier_points": [1-9]' "$work/out.json"; check "the JSON counts the outliers" $?

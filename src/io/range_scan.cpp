@@ -45,21 +45,30 @@ boundingSphere (const TriangleMesh& mesh)
   return s;
 }
 
-/** A pinhole camera at the viewpoint aimed at the sphere's centre; its image, the square
-  * [-half, half]^2 on the plane at depth 1, just covers the sphere. */
+/** Half the side of the image on the plane at depth 1 of a camera with this field of view
+  * (degrees); 0 when the angle is so small that it vanishes. */
+double
+halfWidth (double field_of_view)
+{
+  return std::tan (field_of_view * M_PI / 360.0);
+}
+
+/** A pinhole camera at the viewpoint aimed at the sphere's centre; its image is the square
+  * [-half, half]^2 on the plane at depth 1, which spans the field of view or, without one, just
+  * covers the sphere. */
 struct Camera
 {
   Eigen::Vector3d eye, forward, right, up;
   double half = 0.0;
 
-  Camera (const Eigen::Vector3d& viewpoint, const BoundingSphere& sphere)
+  Camera (const Eigen::Vector3d& viewpoint, const BoundingSphere& sphere, double field_of_view)
     : eye (viewpoint), forward ((sphere.centre - viewpoint).normalized ())
   {
     const Eigen::Vector3d helper = std::abs (forward.z ()) < 0.9 ? Eigen::Vector3d::UnitZ () : Eigen::Vector3d::UnitX ();
     right = forward.cross (helper).normalized ();
     up = right.cross (forward);
     const double distance = (sphere.centre - viewpoint).norm ();
-    half = std::tan (std::asin (sphere.radius / distance));
+    half = field_of_view > 0.0 ? halfWidth (field_of_view) : std::tan (std::asin (sphere.radius / distance));
   }
 
   /** The image coordinates of \a p (in front of the camera). */
@@ -101,6 +110,14 @@ fromPixel (const Camera& camera, long side, double pixel)
   return (pixel + 0.5) / static_cast<double> (side) * 2.0 * camera.half - camera.half;
 }
 
+/** A whole pixel coordinate \a v as an integer, held within [-1, side] first so that faces far
+  * outside a narrow image convert safely (every value outside the image stays outside). */
+long
+toWhole (double v, long side)
+{
+  return static_cast<long> (std::clamp (v, -1.0, static_cast<double> (side)));
+}
+
 /** Writes the face's hits into the pixels whose centres it covers, where it is nearer. */
 void
 rasteriseFace (const TriangleMesh& mesh, int face_index, const Camera& camera, DepthImage& image)
@@ -116,12 +133,13 @@ rasteriseFace (const TriangleMesh& mesh, int face_index, const Camera& camera, D
     px[k] = Eigen::Vector2d (toPixel (camera, image.side, xy.x ()), toPixel (camera, image.side, xy.y ()));
   }
   const double area = (px[1] - px[0]).x () * (px[2] - px[0]).y () - (px[1] - px[0]).y () * (px[2] - px[0]).x ();
-  if (area == 0.0 || normal.squaredNorm () == 0.0)
-    return; // edge-on or degenerate: seen from the side, it hides nothing
-  const long x0 = std::max (0L, static_cast<long> (std::ceil (std::min ({px[0].x (), px[1].x (), px[2].x ()}))));
-  const long x1 = std::min (image.side - 1, static_cast<long> (std::floor (std::max ({px[0].x (), px[1].x (), px[2].x ()}))));
-  const long y0 = std::max (0L, static_cast<long> (std::ceil (std::min ({px[0].y (), px[1].y (), px[2].y ()}))));
-  const long y1 = std::min (image.side - 1, static_cast<long> (std::floor (std::max ({px[0].y (), px[1].y (), px[2].y ()}))));
+  if (area == 0.0 || !std::isfinite (area) || normal.squaredNorm () == 0.0)
+    return; // edge-on or degenerate: seen from the side, it hides nothing; or far off a narrow image
+  const long side = image.side;
+  const long x0 = std::max (0L, toWhole (std::ceil (std::min ({px[0].x (), px[1].x (), px[2].x ()})), side));
+  const long x1 = std::min (side - 1, toWhole (std::floor (std::max ({px[0].x (), px[1].x (), px[2].x ()})), side));
+  const long y0 = std::max (0L, toWhole (std::ceil (std::min ({px[0].y (), px[1].y (), px[2].y ()})), side));
+  const long y1 = std::min (side - 1, toWhole (std::floor (std::max ({px[0].y (), px[1].y (), px[2].y ()})), side));
   const double plane = normal.dot (a - camera.eye);
   for (long y = y0; y <= y1; ++y)
     for (long x = x0; x <= x1; ++x)
@@ -191,10 +209,19 @@ checkRangeScanOptions (const TriangleMesh& mesh, const RangeScanOptions& options
 {
   if (!options.viewpoint.allFinite ())
     return Status::error ("the scan viewpoint has non-finite coordinates");
-  if (options.points < 4 || options.points > kMaxScanPoints)
+  if (options.image_pixels == 0 && (options.points < 4 || options.points > kMaxScanPoints))
     return Status::error ("a scan needs between 4 and 10^8 points, got " + std::to_string (options.points));
+  if (options.image_pixels > kMaxScanImagePixels)
+    return Status::error ("the scan image must be at most " + std::to_string (kMaxScanImagePixels) +
+                          " pixels on a side (0: chosen from the points wanted), got " + std::to_string (options.image_pixels));
+  if (!(options.field_of_view == 0.0 ||
+        (options.field_of_view > 0.0 && options.field_of_view < 180.0 && halfWidth (options.field_of_view) > 0.0)))
+    return Status::error ("the scan's field of view must be an angle in degrees in (0, 180) (0: the image just covers the "
+                          "bounding sphere), got " + std::to_string (options.field_of_view));
   if (!(options.depth_noise >= 0.0 && options.depth_noise <= 1.0))
     return Status::error ("the depth noise must be a share of the diagonal in [0, 1], got " + std::to_string (options.depth_noise));
+  if (options.noise_model != DepthNoiseModel::kGrowsWithSquaredRange && options.noise_model != DepthNoiseModel::kConstant)
+    return Status::error ("unknown depth noise model " + std::to_string (static_cast<int> (options.noise_model)));
   if (mesh.faces.empty ())
     return Status::error ("the mesh has no faces to scan");
   const BoundingSphere sphere = boundingSphere (mesh);
@@ -221,8 +248,9 @@ scanMesh (const TriangleMesh& mesh, const RangeScanOptions& options, std::vector
   if (const Status s = checkRangeScanOptions (mesh, options); !s)
     return s;
   const BoundingSphere sphere = boundingSphere (mesh);
-  const Camera camera (options.viewpoint, sphere);
-  const DepthImage image = renderEnoughHits (mesh, camera, options.points);
+  const Camera camera (options.viewpoint, sphere, options.field_of_view);
+  const DepthImage image = options.image_pixels > 0 ? renderDepth (mesh, camera, static_cast<long> (options.image_pixels))
+                                                    : renderEnoughHits (mesh, camera, options.points);
   std::vector<std::size_t> hits;
   for (std::size_t k = 0; k < image.depth.size (); ++k)
     if (std::isfinite (image.depth[k]))
@@ -230,7 +258,7 @@ scanMesh (const TriangleMesh& mesh, const RangeScanOptions& options, std::vector
   if (hits.empty ())
     return Status::error ("the mesh shows no face to the sensor at the scan viewpoint");
   std::mt19937_64 rng (options.seed);
-  if (hits.size () > options.points) // keep a random subset, in image order
+  if (options.image_pixels == 0 && hits.size () > options.points) // keep a random subset, in image order
   {
     std::shuffle (hits.begin (), hits.end (), rng);
     hits.resize (options.points);
@@ -238,6 +266,7 @@ scanMesh (const TriangleMesh& mesh, const RangeScanOptions& options, std::vector
   }
   const double centre_range = (sphere.centre - options.viewpoint).norm ();
   const double sigma = options.depth_noise * mesh.diagonal ();
+  const bool constant = options.noise_model == DepthNoiseModel::kConstant;
   std::normal_distribution<double> gauss (0.0, 1.0);
   points.reserve (hits.size ());
   for (std::size_t k : hits)
@@ -245,7 +274,7 @@ scanMesh (const TriangleMesh& mesh, const RangeScanOptions& options, std::vector
     const long x = static_cast<long> (k) % image.side, y = static_cast<long> (k) / image.side;
     const Eigen::Vector3d dir = camera.ray (fromPixel (camera, image.side, static_cast<double> (x)),
                                             fromPixel (camera, image.side, static_cast<double> (y)));
-    const double range = image.depth[k] * dir.norm (), scale = range / centre_range;
+    const double range = image.depth[k] * dir.norm (), scale = constant ? 1.0 : range / centre_range;
     const double noisy = range + (sigma > 0.0 ? sigma * scale * scale * gauss (rng) : 0.0);
     points.push_back (options.viewpoint + noisy * dir.normalized ());
     face_of_point.push_back (image.face[k]);
