@@ -204,8 +204,9 @@ query (const OptionParser& p, const std::vector<std::string>& args, const Option
   for (std::size_t r = 0; r < hits.size (); ++r)
   {
     const auto& e = db.entries ()[hits[r].entry];
-    if (hits[r].aligned)
-      std::printf ("%zu\t%.4f\t%.4f\t%s\t%s\n", r + 1, hits[r].similarity, hits[r].score, e.label.c_str (), e.name.c_str ());
+    if (hits[r].compared)
+      std::printf ("%zu\t%.4f\t%.4f\t%s\t%s\n", r + 1, hits[r].similarity, paper ? hits[r].paper_score : hits[r].distance,
+                   e.label.c_str (), e.name.c_str ());
     else
       std::printf ("%zu\t-\t-\t%s\t%s\n", r + 1, e.label.c_str (), e.name.c_str ());
   }

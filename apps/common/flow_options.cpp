@@ -107,18 +107,18 @@ void
 addMatchOptions (OptionParser& p, pcl_flowseg::MatchParameters& match)
 {
   p.number ("--threshold", "T", "largest distance between matched features, in the signatures'\nnormalised unit (paper)",
-            match.threshold, [] (double v) {
+            match.paper.threshold, [] (double v) {
               pcl_flowseg::MatchParameters m;
-              m.threshold = v;
+              m.paper.threshold = v;
               return pcl_flowseg::checkMatchParameters (m);
             });
-  p.count ("--alignment-points", "N", "heaviest features that generate alignments (paper)", match.alignment_points, 0,
+  p.count ("--alignment-points", "N", "heaviest features that generate alignments (paper)", match.paper.alignment_points, 0,
            std::numeric_limits<int>::max (), [] (long long v) {
              pcl_flowseg::MatchParameters m;
-             m.alignment_points = static_cast<int> (v);
+             m.paper.alignment_points = static_cast<int> (v);
              return pcl_flowseg::checkMatchParameters (m);
            });
-  bool* mirror = &match.allow_mirror;
+  bool* mirror = &match.paper.allow_mirror;
   p.action ("--no-mirror", "do not match mirror images (paper)", [mirror] () { *mirror = false; });
 }
 

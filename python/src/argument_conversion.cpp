@@ -241,15 +241,15 @@ addOtherKeywords (std::map<std::string, Keyword>& k)
                    return r;
                  }};
   k["threshold"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
-                      return toNumber (n, v, m.threshold);
+                      return toNumber (n, v, m.paper.threshold);
                     }};
   k["allow_mirror"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
-                         return toFlag (n, v, m.allow_mirror);
+                         return toFlag (n, v, m.paper.allow_mirror);
                        }};
   k["alignment_points"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
                              std::int64_t count = 0;
                              const Conversion r = toCount (n, v, std::numeric_limits<int>::min (), std::numeric_limits<int>::max (), count);
-                             m.alignment_points = static_cast<int> (count);
+                             m.paper.alignment_points = static_cast<int> (count);
                              return r;
                            }};
 }
@@ -338,9 +338,9 @@ Arguments
 matchArguments (const pcl_flowseg::MatchParameters& m)
 {
   return {{"method", std::string (pcl_flowseg::matchMethodName (m.method))},
-          {"threshold", m.threshold},
-          {"allow_mirror", m.allow_mirror},
-          {"alignment_points", static_cast<std::int64_t> (m.alignment_points)}};
+          {"threshold", m.paper.threshold},
+          {"allow_mirror", m.paper.allow_mirror},
+          {"alignment_points", static_cast<std::int64_t> (m.paper.alignment_points)}};
 }
 
 namespace {

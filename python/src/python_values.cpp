@@ -147,6 +147,13 @@ raiseOsErrorIfFailed (const pcl_flowseg::Status& status)
   }
 }
 
+void
+warnDeprecated (const char* message)
+{
+  if (PyErr_WarnEx (PyExc_DeprecationWarning, message, 1) != 0)
+    throw py::error_already_set ();
+}
+
 py::array_t<double>
 rowsToArray (const std::vector<Eigen::Vector3d>& rows)
 {

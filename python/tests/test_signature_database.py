@@ -35,10 +35,21 @@ def test_database_add_save_open_query(collection, tmp_path):
     query = fs.signature_of_file(os.path.join(str(collection), "snowman3d", "snowman3d-2.pcd"))
     hits = again.query(query, k=3)
     assert len(hits) == 3 and hits[0].name == "snowman3d/snowman3d-2.pcd" and hits[0].similarity == pytest.approx(1.0)
-    assert hits[0].label == "snowman3d" and hits[0].aligned
+    assert hits[0].label == "snowman3d" and hits[0].compared
     few = again.query(query, k=0, candidates=2)
-    assert len(few) == 9 and sum(h.aligned for h in few) == 2
-    assert all(np.isnan(h.similarity) for h in few if not h.aligned)
+    assert len(few) == 9 and sum(h.compared for h in few) == 2
+    assert all(np.isnan(h.similarity) for h in few if not h.compared)
+    # The description methods give a distance, the paper's method its own score; the old names warn.
+    assert hits[0].distance == pytest.approx(0.0, abs=1e-9) and np.isnan(hits[0].paper_score)
+    assert hits[1].similarity == pytest.approx(np.exp(-hits[1].distance))
+    with pytest.deprecated_call():
+        assert hits[1].aligned == hits[1].compared
+    with pytest.deprecated_call():
+        assert hits[1].score == hits[1].distance
+    paper = again.query(query, k=2, method="paper", alignment_points=3)
+    assert paper[0].paper_score > 0 and np.isnan(paper[0].distance)
+    with pytest.deprecated_call():
+        assert paper[0].score == paper[0].paper_score
 
 
 def test_match_is_symmetric_and_invariant():
@@ -63,7 +74,13 @@ def test_match_is_symmetric_and_invariant():
     assert contexts[:, 1:].sum(axis=1) == pytest.approx([1.0] * 64, abs=1e-4)
     other = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
     assert fs.match(a, other).similarity == pytest.approx(fs.match(other, a).similarity)
-    assert fs.match(a, other, method="paper", threshold=0.2, allow_mirror=False, alignment_points=2).alignments > 0
+    paper = fs.match(a, other, method="paper", threshold=0.2, allow_mirror=False, alignment_points=2)
+    assert paper.alignments > 0 and np.isnan(paper.distance)
+    assert paper.similarity == pytest.approx(paper.paper_score / max(len(a), len(other)))
+    described = fs.match(a, other)
+    assert np.isnan(described.paper_score) and described.similarity == pytest.approx(np.exp(-described.distance))
+    with pytest.deprecated_call():
+        assert described.score == described.distance
     for method in ("flowseg", "parts", "thickness", "inner", "solid", "inner-profile", "thickness-profile",
                    "inner-context"):
         assert fs.match(a, other, method=method).similarity < fs.match(a, b, method=method).similarity, method

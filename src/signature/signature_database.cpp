@@ -13,6 +13,7 @@
 #include "database_format.h"
 
 #include <flann/flann.hpp>
+#include <pcl/console/print.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -143,22 +144,44 @@ SignatureDatabase::contains (const std::string& name) const
 
 namespace {
 
-/** The vector a method's candidates are picked by (signatureSummary or descriptionSummary). */
+/** The vector candidates for \a params are picked by: signatureSummary for the paper's method,
+  * which compares no descriptions; for the description methods descriptionSummary, each block
+  * weighted as the method weighs its distance. */
 std::vector<float>
-candidateSummary (const Signature& signature, MatchMethod method)
+candidateSummary (const Signature& signature, const MatchParameters& params)
 {
-  if (method == MatchMethod::Paper)
+  if (params.method == MatchMethod::Paper)
   {
     const auto summary = signatureSummary (signature);
     return std::vector<float> (summary.begin (), summary.end ());
   }
-  const auto summary = descriptionSummary (signature, method);
+  const auto summary = descriptionSummary (signature, descriptionWeights (params, signature.dimension));
   return std::vector<float> (summary.begin (), summary.end ());
 }
 
+/** What candidateSummary depends on besides the signature: the paper's method, or the weights of
+  * the description distances for 2D and for 3D shapes. Equal keys, equal summaries. */
+std::vector<double>
+summaryKey (const MatchParameters& params)
+{
+  if (params.method == MatchMethod::Paper)
+    return {1.0};
+  std::vector<double> key{0.0};
+  for (int dimension : {2, 3})
+  {
+    const DescriptionWeights w = descriptionWeights (params, dimension);
+    key.insert (key.end (), {w.parts, w.thickness, w.inner_distance, w.solid_distance, w.inner_profile,
+                             w.thickness_profile, w.contour, w.inner_context});
+  }
+  return key;
+}
+
+/** Most candidate indexes kept: a caller trying many weights does not pile up indexes. */
+constexpr std::size_t kKeptIndexes = 16;
+
 } // namespace
 
-/** One method's summaries of the stored signatures in a FLANN k-d tree, one tree per dimension. */
+/** The summaries of the stored signatures for one summaryKey in a FLANN k-d tree, one tree per dimension. */
 struct SignatureDatabase::CandidateIndex
 {
   struct Tree
@@ -172,16 +195,17 @@ struct SignatureDatabase::CandidateIndex
 };
 
 std::shared_ptr<const SignatureDatabase::CandidateIndex>
-SignatureDatabase::candidateIndex (MatchMethod method) const
+SignatureDatabase::candidateIndex (const MatchParameters& params) const
 {
+  std::vector<double> key = summaryKey (params);
   std::lock_guard<std::mutex> lock (*index_mutex_);
-  if (const auto found = indexes_.find (method); found != indexes_.end ())
+  if (const auto found = indexes_.find (key); found != indexes_.end ())
     return found->second;
   auto built = std::make_shared<CandidateIndex> ();
   for (std::size_t i = 0; i < entries_.size (); ++i)
   {
     auto& tree = built->trees[entries_[i].signature.dimension == 2 ? 0 : 1];
-    const std::vector<float> summary = candidateSummary (entries_[i].signature, method);
+    const std::vector<float> summary = candidateSummary (entries_[i].signature, params);
     built->width = summary.size ();
     tree.entry.push_back (i);
     tree.rows.insert (tree.rows.end (), summary.begin (), summary.end ());
@@ -193,7 +217,9 @@ SignatureDatabase::candidateIndex (MatchMethod method) const
                                                             flann::KDTreeSingleIndexParams (10)));
       tree.index->buildIndex ();
     }
-  indexes_[method] = built;
+  if (indexes_.size () >= kKeptIndexes)
+    indexes_.clear (); // queries still using one keep it alive
+  indexes_[std::move (key)] = built;
   return built;
 }
 
@@ -207,16 +233,22 @@ std::vector<QueryHit>
 SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
                           std::size_t candidates) const
 {
-  const auto index = candidateIndex (matcher.getMethod ());
+  const MatchParameters& params = matcher.getParameters ();
+  if (const Status s = checkMatchParameters (params); !s)
+  {
+    PCL_ERROR ("[pcl_flowseg::SignatureDatabase::query] %s\n", s.message.c_str ());
+    return {}; // summaries with such weights would order nothing
+  }
+  const auto index = candidateIndex (params);
   const auto& tree = index->trees[signature.dimension == 2 ? 0 : 1];
   const std::size_t stored = tree.entry.size ();
   if (stored == 0)
     return {};
   // Every stored shape of this dimension by summary distance: the nearest are the candidates. The
   // k-d tree answers exactly; only as many rows as are needed are asked for.
-  const std::size_t aligned = candidates == 0 ? stored : std::min (candidates, stored);
-  const std::size_t wanted = k == 0 ? stored : std::min (stored, std::max (k, aligned));
-  std::vector<float> summary = candidateSummary (signature, matcher.getMethod ());
+  const std::size_t compared = candidates == 0 ? stored : std::min (candidates, stored);
+  const std::size_t wanted = k == 0 ? stored : std::min (stored, std::max (k, compared));
+  std::vector<float> summary = candidateSummary (signature, params);
   std::vector<int> rows (wanted);
   std::vector<float> distances (wanted);
   flann::Matrix<int> row_matrix (rows.data (), 1, wanted);
@@ -232,17 +264,18 @@ SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::
     QueryHit hit;
     hit.entry = tree.entry[static_cast<std::size_t> (rows[r])];
     hit.summary_distance = std::sqrt (static_cast<double> (distances[r]));
-    hit.aligned = r < aligned;
-    hit.similarity = hit.score = std::numeric_limits<double>::quiet_NaN ();
+    hit.compared = r < compared;
+    hit.similarity = hit.distance = hit.paper_score = std::numeric_limits<double>::quiet_NaN ();
     hits.push_back (hit);
   }
   // The candidates compared in full, side by side: each writes only its own hit.
-  runParallelJobs (std::min (aligned, hits.size ()), query_threads_, [&] (std::size_t r) {
+  runParallelJobs (std::min (compared, hits.size ()), query_threads_, [&] (std::size_t r) {
     const auto m = matcher.match (signature, entries_[hits[r].entry].signature);
     hits[r].similarity = m.similarity;
-    hits[r].score = m.score;
+    hits[r].distance = m.distance;
+    hits[r].paper_score = m.paper_score;
   });
-  std::stable_sort (hits.begin (), hits.begin () + static_cast<std::ptrdiff_t> (std::min (aligned, hits.size ())),
+  std::stable_sort (hits.begin (), hits.begin () + static_cast<std::ptrdiff_t> (std::min (compared, hits.size ())),
                     [] (const QueryHit& a, const QueryHit& b) { return a.similarity > b.similarity; });
   if (k > 0 && hits.size () > k)
     hits.resize (k);

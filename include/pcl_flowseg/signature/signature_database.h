@@ -25,13 +25,19 @@ namespace pcl_flowseg {
 struct QueryHit
 {
   std::size_t entry = 0; ///< index into SignatureDatabase::entries()
-  double similarity = 0.0; ///< SignatureMatcher::Result::similarity (the ranking key)
-  double score = 0.0;      ///< SignatureMatcher::Result::score (paper: raw score; other methods: distance)
-  /** True when the query was compared with this shape in full (aligned, for the paper's method;
-    * similarity and score set); false for shapes outside the candidates, ranked by summary distance
-    * only (similarity and score are NaN). The name dates from the paper's method. */
-  bool aligned = true;
-  double summary_distance = 0.0; ///< distance between the two signatures' summaries
+  /** SignatureMatcher::Result::similarity (the ranking key, higher = more similar); NaN when not
+    * compared. */
+  double similarity = 0.0;
+  /** SignatureMatcher::Result::distance (description methods); NaN for MatchMethod::Paper and when
+    * not compared. */
+  double distance = 0.0;
+  /** SignatureMatcher::Result::paper_score (MatchMethod::Paper); NaN for the other methods and
+    * when not compared. */
+  double paper_score = 0.0;
+  /** True when the query was compared with this shape in full (SignatureMatcher::match); false for
+    * shapes outside the candidates, ranked by summary distance only. */
+  bool compared = true;
+  double summary_distance = 0.0; ///< distance between the two signatures' candidate summaries
 };
 
 /** \brief Default number of results of a query (the k of SignatureDatabase::query in the apps and
@@ -97,8 +103,9 @@ public:
 
   /** \brief How many stored shapes a query compares in full: the \a count whose summaries lie
     * nearest to the query's (a FLANN k-d tree over signatureSummary for MatchMethod::Paper,
-    * descriptionSummary for the other methods, picks them); 0 = every stored shape (exact ranking;
-    * the cost grows with the database). Default kDefaultCandidates. */
+    * descriptionSummary with the method's descriptionWeights for the other methods, picks them);
+    * 0 = every stored shape (exact ranking; the cost grows with the database). Default
+    * kDefaultCandidates. */
   void setCandidates (std::size_t count) { candidates_ = count; }
   std::size_t getCandidates () const { return candidates_; }
 
@@ -110,7 +117,8 @@ public:
 
   /** \brief The \a k most similar stored shapes (all when k = 0) under \a matcher's method. The
     * compared candidates come first, by decreasing similarity; the other shapes follow by
-    * increasing summary distance (aligned = false). Shapes of another dimension are skipped. Safe
+    * increasing summary distance (compared = false). Shapes of another dimension are skipped.
+    * Parameters that checkMatchParameters refuses find nothing. Safe
     * to call from several threads. */
   std::vector<QueryHit> query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const;
   /** \brief As above with \a candidates in place of getCandidates(): for callers that share one
@@ -122,8 +130,9 @@ private:
   Status saveLocked (const std::string& path) const;
 
   struct CandidateIndex;
-  /** The candidate index of \a method, built on its first query after a change. */
-  std::shared_ptr<const CandidateIndex> candidateIndex (MatchMethod method) const;
+  /** The candidate index for \a params (the summaries depend on the method and, for the
+    * description methods, on their weights), built on its first query after a change. */
+  std::shared_ptr<const CandidateIndex> candidateIndex (const MatchParameters& params) const;
   /** Drops the candidate indexes (the entries changed). */
   void forgetIndexes ();
 
@@ -131,7 +140,8 @@ private:
   std::unordered_map<std::string, std::size_t> by_name_;
   std::size_t candidates_ = kDefaultCandidates;
   unsigned query_threads_ = 0;
-  mutable std::map<MatchMethod, std::shared_ptr<const CandidateIndex>> indexes_;
+  /** The candidate indexes built, by what their summaries depend on (summaryKey). */
+  mutable std::map<std::vector<double>, std::shared_ptr<const CandidateIndex>> indexes_;
   std::shared_ptr<std::mutex> index_mutex_ = std::make_shared<std::mutex> ();
 };
 
