@@ -44,29 +44,34 @@ struct QueryHit
   * the Python module). */
 constexpr std::size_t kDefaultQueryResults = 10;
 
-/** \brief Default number of stored shapes compared in full per query (SignatureDatabase::setCandidates):
-  * enough for the candidate index to find the exact top 10 of the default method among 100,000
-  * stored shapes (docs/measurements.md, "Speed and memory"). */
+/** \brief Default number of stored shapes compared in full per query (SignatureDatabase::setCandidates);
+  * how well the candidate index finds the exact top results with it is measured in
+  * docs/measurements.md ("Speed and memory"). */
 constexpr std::size_t kDefaultCandidates = 1000;
 
-/** \brief Signatures of many shapes, kept in one text file:
+/** \brief Signatures of many shapes, kept in one text file (version kDatabaseVersion):
   *
-  *     pcl_flowseg signature database 4
+  *     pcl_flowseg signature database 6
   *     shapes N
-  *     shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS CONTOUR NAME...
-  *     p X Y Z WEIGHT                                   (POINTS lines)
-  *     q WEIGHT THICKNESS EXTENT MIDDLE SMALLEST OFFSET (PARTS lines: ShapeDescription::parts)
-  *     t B1 ... B32    i B1 ... B32    s B1 ... B32     (when PARTS > 0: the thickness, inner- and
-  *                                                       solid-distance distributions)
-  *     r B1 ... B32                                     (when PARTS > 0: 16 lines, the inner-distance
-  *                                                       profiles)
-  *     h V1 ... V16                                     (when PARTS > 0: the thickness profile)
-  *     c B1 ... B60                                     (CONTOUR lines, 0 or 64: ShapeDescription::contour)
+  *     shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS CONTOUR CONTEXTS NAME...
+  *     p X Y Z WEIGHT                                        POINTS lines: Signature::points
+  *     q WEIGHT THICKNESS EXTENT MIDDLE SMALLEST REMOTENESS  PARTS lines: ShapeDescription::parts
+  *     t B1 ... B32                                          the distributions (kDistributionBins
+  *     i B1 ... B32                                          each): thickness, inner distance,
+  *     s B1 ... B32                                          solid distance
+  *     r B1 ... B32                                          kProfileRows lines: inner_profiles
+  *     h V1 ... V16                                          thickness_profile (kProfileRows)
+  *     c B1 ... B60                                          CONTOUR lines (0 or kContourPoints):
+  *                                                           contour (kContourBins each)
+  *     x THICKNESS B1 ... B16                                CONTEXTS lines: inner_contexts
+  *                                                           (kContextBins each)
   *
-  * Labels contain no white space; names may. Loading checks the header, the version, every count
-  * and number, and reports the line of the first problem. Files of versions 1 to 3 (written by
-  * older builds, without parts of the description) are refused with a message that says to
-  * rebuild them. */
+  * A shape without a description (PARTS = CONTOUR = CONTEXTS = 0) has only its shape and p lines.
+  * Labels contain no white space ("-" for none); names may. Numbers are written with 17 significant
+  * digits, the c and x lines' (floats) with 9, so that every value reads back exactly. Loading
+  * checks the header, the version, every count and number, and reports the line of the first
+  * problem. Files of versions 1 to 5 (written by older builds, without parts of today's
+  * descriptions) are refused with a message that says to rebuild them. */
 class SignatureDatabase
 {
 public:
