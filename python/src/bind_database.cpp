@@ -66,10 +66,7 @@ query (const SignatureDatabase& db, const pcl_flowseg::Signature& signature, std
   }
   std::vector<Hit> out;
   for (const auto& h : hits)
-  {
-    const auto& e = db.entries ()[h.entry];
-    out.push_back ({h.entry, e.name, e.label, h.similarity, h.distance, h.paper_score, h.summary_distance, h.compared});
-  }
+    out.push_back ({h.entry, h.name, h.label, h.similarity, h.distance, h.paper_score, h.summary_distance, h.compared});
   return out;
 }
 
@@ -145,14 +142,18 @@ bindDatabase (py::module_& m)
 {
   bindHit (m);
   py::class_<SignatureDatabase> (m, "Database",
-                                 "Signatures of many shapes, kept in one text file (the format of flowseg_db).")
+                                 "Signatures of many shapes, kept in one text file (the format of flowseg_db). Any number of "
+                                 "threads may query a Database while others add to it, merge into it or save it.")
       .def (py::init<> (), "An empty database.")
       .def_static ("open", &open, py::arg ("path"), "Reads a database file; OSError when it is missing or damaged.")
       .def ("add", [] (SignatureDatabase& db, const std::string& name, const std::string& label, const pcl_flowseg::Signature& s) {
-            return db.add (makeEntry (name, label, s));
+            const pcl_flowseg::ShapeEntry entry = makeEntry (name, label, s);
+            py::gil_scoped_release release; // waits for the queries running on other threads
+            return db.add (entry);
           }, py::arg ("name"), py::arg ("label"), py::arg ("signature"),
           "Adds a shape (replacing one of the same name); True when it was new.")
-      .def ("merge", &SignatureDatabase::merge, py::arg ("shard"), "Adds every shape of another database, in its order; returns how many were new.")
+      .def ("merge", &SignatureDatabase::merge, py::arg ("shard"), py::call_guard<py::gil_scoped_release> (),
+            "Adds every shape of another database, in its order; returns how many were new.")
       .def ("save", [] (const SignatureDatabase& db, const std::string& path, double lock_wait) {
             pcl_flowseg::Status s;
             {
@@ -166,13 +167,18 @@ bindDatabase (py::module_& m)
             "The k most similar stored shapes (all when k = 0), comparing in full the `candidates` nearest by summary (0 = all); "
             "keywords as match().")
       .def ("entries", [] (const SignatureDatabase& db) {
+            std::vector<pcl_flowseg::ShapeEntry> entries;
+            {
+              py::gil_scoped_release release;
+              entries = db.copyEntries ();
+            }
             std::vector<std::tuple<std::string, std::string, pcl_flowseg::Signature>> out;
-            for (const auto& e : db.entries ())
-              out.emplace_back (e.name, e.label, e.signature);
+            for (auto& e : entries)
+              out.emplace_back (std::move (e.name), std::move (e.label), std::move (e.signature));
             return out;
           }, "Every stored shape as (name, label, signature), in file order.")
-      .def ("__len__", &SignatureDatabase::size)
-      .def ("__contains__", &SignatureDatabase::contains)
+      .def ("__len__", &SignatureDatabase::size, py::call_guard<py::gil_scoped_release> ())
+      .def ("__contains__", &SignatureDatabase::contains, py::call_guard<py::gil_scoped_release> ())
       .def_static ("add_to_file", &addToFile, py::arg ("path"), py::arg ("shapes"), py::arg ("lock_wait") = pcl_flowseg::kDefaultLockWait,
                    "Adds (name, label, signature) tuples to a database file in one locked read-modify-write: concurrent "
                    "writers (processes or threads) lose nothing. Returns the number of stored shapes.")

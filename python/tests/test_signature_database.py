@@ -119,6 +119,55 @@ def test_concurrent_adds_from_threads_lose_nothing(tmp_path):
     assert not errors and len(fs.Database.open(path)) == 16
 
 
+def test_queries_from_threads_while_another_thread_adds(collection):
+    files = fs.list_shape_files(str(collection))
+    signatures = {name: fs.signature_of_file(os.path.join(str(collection), name)) for name in files}
+    db = fs.Database()
+    for name in files[:3]:
+        db.add(name, fs.shape_label(name), signatures[name])
+    labels = {fs.shape_label(name) for name in files}
+    done = threading.Event()
+    errors, counts = [], [0, 0, 0]
+
+    def query(reader, name):
+        try:
+            while True:
+                finished = done.is_set()
+                for method in ("flowseg", "paper"):
+                    hits = db.query(signatures[name], k=0, candidates=4, method=method)
+                    assert 3 <= len(hits) <= 3 + 20, len(hits)
+                    assert hits[0].name == name and hits[0].similarity == pytest.approx(1.0), (hits[0], method)
+                    compared = [h for h in hits if h.compared]
+                    assert len(compared) == min(4, len(hits))
+                    assert all(a.similarity >= b.similarity for a, b in zip(compared, compared[1:]))
+                    assert all(np.isnan(h.similarity) for h in hits if not h.compared)
+                    assert all(h.label in labels for h in hits)
+                assert name in db and 3 <= len(db) <= 3 + 20 and len(db.entries()) >= 3
+                counts[reader] += 1
+                if finished:
+                    break
+        except Exception as error:  # collected, asserted below
+            errors.append(error)
+
+    readers = [threading.Thread(target=query, args=(r, name)) for r, name in enumerate(files[:3])]
+    for t in readers:
+        t.start()
+    try:
+        i = 0  # new shapes, then replacements, and a merge, while every reader queries a few times
+        while (i < 40 or min(counts) < 5) and i < 10000 and not errors:
+            name = files[3 + i % (len(files) - 3)]
+            db.add("extra%02d" % (i % 20), fs.shape_label(name), signatures[name])
+            if i == 20:
+                db.merge(db)
+            i += 1
+    finally:
+        done.set()
+        for t in readers:
+            t.join()
+    assert not errors, errors[0]
+    assert min(counts) >= 5 and len(db) == 3 + 20
+
+
 def test_merge_files_in_order(collection, tmp_path):
     files = fs.list_shape_files(str(collection))
     shards = []

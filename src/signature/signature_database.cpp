@@ -22,18 +22,58 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <mutex>
+#include <shared_mutex>
 #include <sstream>
 #include <unistd.h>
 
 namespace pcl_flowseg {
 
+namespace {
 
-Status
-SignatureDatabase::load (const std::string& path)
+/** A reader's share of a database's lock: it waits at the writers' gate first, so that a writer
+  * waiting for the lock is served before readers that come after it. */
+class ReadLock
 {
-  entries_.clear ();
-  by_name_.clear ();
-  forgetIndexes ();
+public:
+  ReadLock (std::mutex& gate, std::shared_mutex& mutex) : mutex_ (mutex)
+  {
+    std::lock_guard<std::mutex> passing (gate);
+    mutex_.lock_shared ();
+  }
+  ~ReadLock () { mutex_.unlock_shared (); }
+  ReadLock (const ReadLock&) = delete;
+  ReadLock& operator= (const ReadLock&) = delete;
+
+private:
+  std::shared_mutex& mutex_;
+};
+
+/** A writer's lock of a database: the gate (new readers wait), then the lock alone. */
+class WriteLock
+{
+public:
+  WriteLock (std::mutex& gate, std::shared_mutex& mutex) : gate_ (gate), mutex_ (mutex) {}
+
+private:
+  std::lock_guard<std::mutex> gate_;
+  std::lock_guard<std::shared_mutex> mutex_;
+};
+
+/** The index of each name in \a entries (the last of equal names). */
+std::unordered_map<std::string, std::size_t>
+indexByName (const std::vector<ShapeEntry>& entries)
+{
+  std::unordered_map<std::string, std::size_t> by_name;
+  for (std::size_t i = 0; i < entries.size (); ++i)
+    by_name[entries[i].name] = i;
+  return by_name;
+}
+
+/** The shapes of the database file \a path (read and checked), or the first problem. */
+Status
+readDatabaseFile (const std::string& path, std::vector<ShapeEntry>& loaded)
+{
   std::ifstream in (path, std::ios::binary);
   if (!in)
     return Status::error (path + ": cannot open (" + std::strerror (errno) + ")");
@@ -41,7 +81,6 @@ SignatureDatabase::load (const std::string& path)
   if (const Status header = readDatabaseHeader (in, path, count); !header)
     return header;
   LineReader reader{in, path, 2};
-  std::vector<ShapeEntry> loaded;
   loaded.reserve (count);
   for (std::size_t s = 0; s < count; ++s)
   {
@@ -50,12 +89,74 @@ SignatureDatabase::load (const std::string& path)
       return read;
     loaded.push_back (std::move (e));
   }
-  entries_ = std::move (loaded);
-  forgetIndexes ();
-  by_name_.clear ();
-  for (std::size_t i = 0; i < entries_.size (); ++i)
-    by_name_[entries_[i].name] = i;
   return Status::success ();
+}
+
+} // namespace
+
+SignatureDatabase::SignatureDatabase (const SignatureDatabase& other)
+{
+  ReadLock lock (other.writer_gate_, other.entries_mutex_);
+  entries_ = other.entries_;
+  by_name_ = other.by_name_;
+  candidates_ = other.candidates_.load ();
+  query_threads_ = other.query_threads_.load ();
+}
+
+SignatureDatabase::SignatureDatabase (SignatureDatabase&& other) noexcept
+{
+  WriteLock lock (other.writer_gate_, other.entries_mutex_);
+  entries_ = std::move (other.entries_);
+  by_name_ = std::move (other.by_name_);
+  candidates_ = other.candidates_.load ();
+  query_threads_ = other.query_threads_.load ();
+  other.entries_.clear ();
+  other.by_name_.clear ();
+  std::lock_guard<std::mutex> indexes (other.index_mutex_);
+  indexes_ = std::move (other.indexes_);
+  other.indexes_.clear ();
+}
+
+SignatureDatabase&
+SignatureDatabase::operator= (const SignatureDatabase& other)
+{
+  if (this != &other)
+    *this = SignatureDatabase (other);
+  return *this;
+}
+
+SignatureDatabase&
+SignatureDatabase::operator= (SignatureDatabase&& other) noexcept
+{
+  if (this == &other)
+    return *this;
+  // Both databases alone; std::scoped_lock takes the four without deadlock whatever the order.
+  std::scoped_lock both (writer_gate_, entries_mutex_, other.writer_gate_, other.entries_mutex_);
+  entries_ = std::move (other.entries_);
+  by_name_ = std::move (other.by_name_);
+  candidates_ = other.candidates_.load ();
+  query_threads_ = other.query_threads_.load ();
+  other.entries_.clear ();
+  other.by_name_.clear ();
+  std::scoped_lock indexes (index_mutex_, other.index_mutex_);
+  indexes_ = std::move (other.indexes_);
+  other.indexes_.clear ();
+  return *this;
+}
+
+Status
+SignatureDatabase::load (const std::string& path)
+{
+  std::vector<ShapeEntry> loaded;
+  const Status read = readDatabaseFile (path, loaded);
+  if (!read)
+    loaded.clear ();
+  std::unordered_map<std::string, std::size_t> by_name = indexByName (loaded);
+  WriteLock lock (writer_gate_, entries_mutex_);
+  entries_ = std::move (loaded);
+  by_name_ = std::move (by_name);
+  forgetIndexes ();
+  return read;
 }
 
 Status
@@ -86,6 +187,7 @@ SignatureDatabase::update (const std::string& path, const std::function<Status (
 Status
 SignatureDatabase::saveLocked (const std::string& path) const
 {
+  ReadLock lock (writer_gate_, entries_mutex_);
   for (const ShapeEntry& e : entries_)
   {
     if (const Status s = checkSignature (e.signature); !s)
@@ -108,12 +210,19 @@ SignatureDatabase::saveLocked (const std::string& path) const
 void
 SignatureDatabase::forgetIndexes ()
 {
-  std::lock_guard<std::mutex> lock (*index_mutex_);
+  std::lock_guard<std::mutex> lock (index_mutex_);
   indexes_.clear ();
 }
 
 bool
 SignatureDatabase::add (const ShapeEntry& entry)
+{
+  WriteLock lock (writer_gate_, entries_mutex_);
+  return addLocked (entry);
+}
+
+bool
+SignatureDatabase::addLocked (const ShapeEntry& entry)
 {
   forgetIndexes ();
   const auto found = by_name_.find (entry.name);
@@ -130,16 +239,35 @@ SignatureDatabase::add (const ShapeEntry& entry)
 std::size_t
 SignatureDatabase::merge (const SignatureDatabase& shard)
 {
+  // A copy first: the two locks are never held together (no deadlock when two databases merge
+  // each other, and a database may merge itself).
+  const std::vector<ShapeEntry> added_entries = shard.copyEntries ();
+  WriteLock lock (writer_gate_, entries_mutex_);
   std::size_t added = 0;
-  for (const ShapeEntry& entry : shard.entries_)
-    added += add (entry) ? 1 : 0;
+  for (const ShapeEntry& entry : added_entries)
+    added += addLocked (entry) ? 1 : 0;
   return added;
 }
 
 bool
 SignatureDatabase::contains (const std::string& name) const
 {
+  ReadLock lock (writer_gate_, entries_mutex_);
   return by_name_.count (name) > 0;
+}
+
+std::size_t
+SignatureDatabase::size () const
+{
+  ReadLock lock (writer_gate_, entries_mutex_);
+  return entries_.size ();
+}
+
+std::vector<ShapeEntry>
+SignatureDatabase::copyEntries () const
+{
+  ReadLock lock (writer_gate_, entries_mutex_);
+  return entries_;
 }
 
 namespace {
@@ -198,7 +326,7 @@ std::shared_ptr<const SignatureDatabase::CandidateIndex>
 SignatureDatabase::candidateIndex (const MatchParameters& params) const
 {
   std::vector<double> key = summaryKey (params);
-  std::lock_guard<std::mutex> lock (*index_mutex_);
+  std::lock_guard<std::mutex> lock (index_mutex_);
   if (const auto found = indexes_.find (key); found != indexes_.end ())
     return found->second;
   auto built = std::make_shared<CandidateIndex> ();
@@ -232,6 +360,20 @@ SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::
 std::vector<QueryHit>
 SignatureDatabase::query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
                           std::size_t candidates) const
+{
+  ReadLock lock (writer_gate_, entries_mutex_);
+  std::vector<QueryHit> hits = queryLocked (signature, k, matcher, candidates);
+  for (QueryHit& hit : hits)
+  {
+    hit.name = entries_[hit.entry].name;
+    hit.label = entries_[hit.entry].label;
+  }
+  return hits;
+}
+
+std::vector<QueryHit>
+SignatureDatabase::queryLocked (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
+                                std::size_t candidates) const
 {
   const MatchParameters& params = matcher.getParameters ();
   if (const Status s = checkMatchParameters (params); !s)

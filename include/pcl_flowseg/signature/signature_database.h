@@ -10,10 +10,12 @@
 #include <pcl_flowseg/common/status.h>
 #include <pcl_flowseg/io/file_lock.h>
 
+#include <atomic>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <shared_mutex>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -24,7 +26,9 @@ namespace pcl_flowseg {
 /** \brief A query result. */
 struct QueryHit
 {
-  std::size_t entry = 0; ///< index into SignatureDatabase::entries()
+  std::size_t entry = 0; ///< index into SignatureDatabase::entries() when the query ran
+  std::string name;      ///< the shape's ShapeEntry::name
+  std::string label;     ///< the shape's ShapeEntry::label
   /** SignatureMatcher::Result::similarity (the ranking key, higher = more similar); NaN when not
     * compared. */
   double similarity = 0.0;
@@ -71,15 +75,27 @@ constexpr std::size_t kDefaultCandidates = 1000;
   * digits, the c and x lines' (floats) with 9, so that every value reads back exactly. Loading
   * checks the header, the version, every count and number, and reports the line of the first
   * problem. Files of versions 1 to 5 (written by older builds, without parts of today's
-  * descriptions) are refused with a message that says to rebuild them. */
+  * descriptions) are refused with a message that says to rebuild them.
+  *
+  * Threads: any number may query a database (and call the other const members) while others add,
+  * merge, load or assign: readers share a lock that changes hold alone (a waiting change goes
+  * before queries that come after it). Only the reference entries() returns is not guarded. */
 class SignatureDatabase
 {
 public:
   static constexpr int kVersion = kDatabaseVersion;
 
-  /** Reads a database file. It needs no lock: writers replace the file in one rename, so a
-    * reader sees one complete version. Every value is checked (checkSignature); the first problem
-    * is reported with its line. */
+  SignatureDatabase () = default;
+  /** Copies and moves take the other database's lock: safe while other threads query it. */
+  SignatureDatabase (const SignatureDatabase& other);
+  SignatureDatabase (SignatureDatabase&& other) noexcept;
+  SignatureDatabase& operator= (const SignatureDatabase& other);
+  SignatureDatabase& operator= (SignatureDatabase&& other) noexcept;
+  ~SignatureDatabase () = default;
+
+  /** Reads a database file in place of the stored shapes (none when it fails). It needs no file
+    * lock: writers replace the file in one rename, so a reader sees one complete version. Every
+    * value is checked (checkSignature); the first problem is reported with its line. */
   Status load (const std::string& path);
   /** Writes the whole database, under the file's lock (FileLock, waiting at most \a lock_wait
     * seconds), to a temporary file flushed to the disk and renamed when complete: a writer that
@@ -103,8 +119,14 @@ public:
     * database built from the whole collection at once. \return how many shapes were new. */
   std::size_t merge (const SignatureDatabase& shard);
   bool contains (const std::string& name) const;
+  std::size_t size () const;
+  /** \brief The stored shapes, in the order they were added (QueryHit::entry indexes them). The
+    * reference is not guarded: use it only while no other thread changes the database (add, merge,
+    * load, assignment); otherwise use copyEntries(). */
   const std::vector<ShapeEntry>& entries () const { return entries_; }
-  std::size_t size () const { return entries_.size (); }
+  /** \brief A copy of the stored shapes, taken under the lock: safe while other threads change
+    * the database. */
+  std::vector<ShapeEntry> copyEntries () const;
 
   /** \brief How many stored shapes a query compares in full: the \a count whose summaries lie
     * nearest to the query's (a FLANN k-d tree over signatureSummary for MatchMethod::Paper,
@@ -123,8 +145,7 @@ public:
   /** \brief The \a k most similar stored shapes (all when k = 0) under \a matcher's method. The
     * compared candidates come first, by decreasing similarity; the other shapes follow by
     * increasing summary distance (compared = false). Shapes of another dimension are skipped.
-    * Parameters that checkMatchParameters refuses find nothing. Safe
-    * to call from several threads. */
+    * Parameters that checkMatchParameters refuses find nothing. */
   std::vector<QueryHit> query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const;
   /** \brief As above with \a candidates in place of getCandidates(): for callers that share one
     * database between threads asking with different candidate counts. */
@@ -132,22 +153,36 @@ public:
                                std::size_t candidates) const;
 
 private:
+  /** Writes the file, the file's lock held. */
   Status saveLocked (const std::string& path) const;
+  /** add() with the write lock held. */
+  bool addLocked (const ShapeEntry& entry);
+  /** query() with the read lock held. */
+  std::vector<QueryHit> queryLocked (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
+                                     std::size_t candidates) const;
 
   struct CandidateIndex;
   /** The candidate index for \a params (the summaries depend on the method and, for the
     * description methods, on their weights), built on its first query after a change. */
   std::shared_ptr<const CandidateIndex> candidateIndex (const MatchParameters& params) const;
-  /** Drops the candidate indexes (the entries changed). */
+  /** Drops the candidate indexes (the entries changed; the write lock held). */
   void forgetIndexes ();
 
   std::vector<ShapeEntry> entries_;
   std::unordered_map<std::string, std::size_t> by_name_;
-  std::size_t candidates_ = kDefaultCandidates;
-  unsigned query_threads_ = 0;
+  std::atomic<std::size_t> candidates_{kDefaultCandidates};
+  std::atomic<unsigned> query_threads_{0};
   /** The candidate indexes built, by what their summaries depend on (summaryKey). */
   mutable std::map<std::vector<double>, std::shared_ptr<const CandidateIndex>> indexes_;
-  std::shared_ptr<std::mutex> index_mutex_ = std::make_shared<std::mutex> ();
+
+  /** Guards entries_ and by_name_: queries, copies and the other readers share it, add, merge,
+    * load and assignment hold it alone. */
+  mutable std::shared_mutex entries_mutex_;
+  /** Taken by writers while they wait for entries_mutex_ and hold it, and briefly by readers
+    * before they share it: a waiting writer is not starved by a stream of queries. */
+  mutable std::mutex writer_gate_;
+  /** Guards indexes_, which queries build under the shared lock. */
+  mutable std::mutex index_mutex_;
 };
 
 } // namespace pcl_flowseg
