@@ -206,11 +206,12 @@ query (const OptionParser& p, const std::vector<std::string>& args, const Option
   std::printf ("rank\tsimilarity\t%s\tclass\tshape\n", paper ? "score" : "distance");
   for (std::size_t r = 0; r < hits.size (); ++r)
   {
-    const auto& e = db.entries ()[hits[r].entry];
-    if (hits[r].aligned)
-      std::printf ("%zu\t%.4f\t%.4f\t%s\t%s\n", r + 1, hits[r].similarity, hits[r].score, e.label.c_str (), e.name.c_str ());
+    const pcl_flowseg::QueryHit& h = hits[r];
+    if (h.compared)
+      std::printf ("%zu\t%.4f\t%.4f\t%s\t%s\n", r + 1, h.similarity, paper ? h.paper_score : h.distance, h.label.c_str (),
+                   h.name.c_str ());
     else
-      std::printf ("%zu\t-\t-\t%s\t%s\n", r + 1, e.label.c_str (), e.name.c_str ());
+      std::printf ("%zu\t-\t-\t%s\t%s\n", r + 1, h.label.c_str (), h.name.c_str ());
   }
   if (!o.quiet)
     std::fprintf (stderr, "query (method %s) against %zu stored signatures (%s compared in full): %.2f ms\n",

@@ -20,7 +20,7 @@ namespace {
 void
 printAlignment (const pcl::SignatureMatcher::Result& m, const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b)
 {
-  std::printf ("similarity %.4f\nscore %.4f (A: %zu features, B: %zu)\nmirrored %s\n", m.similarity, m.score, a.points.size (),
+  std::printf ("similarity %.4f\nscore %.4f (A: %zu features, B: %zu)\nmirrored %s\n", m.similarity, m.paper_score, a.points.size (),
                b.points.size (), m.mirrored ? "yes" : "no");
   std::printf ("pairs (A feature, B feature):");
   for (const auto& pair : m.pairs)
@@ -36,7 +36,7 @@ void
 printDescriptionMatch (const pcl::SignatureMatcher::Result& m, const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b,
                        const pcl_flowseg::MatchParameters& match)
 {
-  std::printf ("similarity %.4f\ndistance %.4f (A: %zu parts, B: %zu)\ncomponents", m.similarity, m.score,
+  std::printf ("similarity %.4f\ndistance %.4f (A: %zu parts, B: %zu)\ncomponents", m.similarity, m.distance,
                a.description.parts.size (), b.description.parts.size ());
   for (pcl_flowseg::MatchMethod method : pcl_flowseg::kMatchMethods)
     if (method != pcl_flowseg::MatchMethod::Combined && method != pcl_flowseg::MatchMethod::Paper)
@@ -44,7 +44,7 @@ printDescriptionMatch (const pcl::SignatureMatcher::Result& m, const pcl_flowseg
       pcl::SignatureMatcher component;
       component.setParameters (match);
       component.setMethod (method);
-      std::printf (" %s %.4f", pcl_flowseg::matchMethodName (method), component.match (a, b).score);
+      std::printf (" %s %.4f", pcl_flowseg::matchMethodName (method), component.match (a, b).distance);
     }
   std::printf ("\n");
 }

@@ -160,18 +160,18 @@ mkdir -p "$work/meshes/a" "$work/meshes/b"
 cp "$work/tet.off" "$work/meshes/a/1.off"
 cp "$work/tet.off" "$work/meshes/b/2.off"
 collect="$src/scripts/make_scan_collection.sh"
-expect "scan collection" 0 "wrote 2 scans .*: points min [0-9]+, median [0-9.]+, max [0-9]+" -- bash "$collect" "$work/meshes" "$work/scans" --build "$build"
-expect "scan collection with noise" 0 "wrote 2 scans" -- bash "$collect" "$work/meshes" "$work/scans_noisy" --noise 0.005 --build "$build"
-[ -f "$work/scans/a/1.pcd" ] && [ -f "$work/scans/b/2.pcd" ] && [ "$(wc -l < "$work/scans/scans.tsv")" = 3 ]; check "one scan per mesh, in its class folder, and the list of scans" $?
+expect "scan collection" 0 "wrote 2 scans .*: points min [0-9]+, median [0-9.]+, max [0-9]+" -- bash "$collect" "$work/meshes" "$work/collection" --build "$build"
+expect "scan collection with noise" 0 "wrote 2 scans" -- bash "$collect" "$work/meshes" "$work/collection_noisy" --noise 0.005 --build "$build"
+[ -f "$work/collection/a/1.pcd" ] && [ -f "$work/collection/b/2.pcd" ] && [ "$(wc -l < "$work/collection/scans.tsv")" = 3 ]; check "one scan per mesh, in its class folder, and the list of scans" $?
 one_seed=$(( (1 + $(printf '%s' a/1.off | cksum | cut -d' ' -f1)) % 4294967296 ))
 "$smp" "$work/meshes/a/1.off" --single-view-protocol --seed "$one_seed" -o "$work/one.pcd" 2>/dev/null
-cmp -s "$work/one.pcd" "$work/scans/a/1.pcd"; check "a collection scan's seed is the base seed plus the cksum of its relative path" $?
-[ "$(grep -m1 '^VIEWPOINT' "$work/scans/a/1.pcd")" = "$(grep -m1 '^VIEWPOINT' "$work/scans_noisy/a/1.pcd")" ] &&
-  [ "$(grep -m1 '^VIEWPOINT' "$work/scans/a/1.pcd")" != "$(grep -m1 '^VIEWPOINT' "$work/scans/b/2.pcd")" ]
+cmp -s "$work/one.pcd" "$work/collection/a/1.pcd"; check "a collection scan's seed is the base seed plus the cksum of its relative path" $?
+[ "$(grep -m1 '^VIEWPOINT' "$work/collection/a/1.pcd")" = "$(grep -m1 '^VIEWPOINT' "$work/collection_noisy/a/1.pcd")" ] &&
+  [ "$(grep -m1 '^VIEWPOINT' "$work/collection/a/1.pcd")" != "$(grep -m1 '^VIEWPOINT' "$work/collection/b/2.pcd")" ]
 check "the noisy collection shares the clean one's viewpoints; two files, two viewpoints" $?
 expect "scan collection bad seed" 2 "seed" -- bash "$collect" "$work/meshes" "$work/x" --seed -1 --build "$build"
 expect "scan collection bad noise" 2 "noise" -- bash "$collect" "$work/meshes" "$work/x" --noise 2 --build "$build"
-expect "scan collection without meshes" 1 "no mesh" -- bash "$collect" "$work/scans" "$work/x" --build "$build"
+expect "scan collection without meshes" 1 "no mesh" -- bash "$collect" "$work/collection" "$work/x" --build "$build"
 expect "sample with outliers" 0 "replaced by outliers" -- "$smp" "$work/tet.off" -n 2000 --outliers 0.02 -o "$work/out.pcd"
 expect "outliers found and left out" 0 "left out as outliers" -- "$seg" "$work/out.pcd" -o "$work/out"
 grep -q '"outlier_points": [1-9]' "$work/out.json"; check "the JSON counts the outliers" $?
@@ -329,6 +329,14 @@ expect "match one input" 2 "two inputs" -- "$mat" "$src/samples/animal3d.pcd"
 expect "match corrupt file" 1 "not a PCD" -- "$mat" "$src/samples/animal3d.pcd" "$work/corrupt.pcd"
 expect "match missing file" 1 "cannot open" -- "$mat" "$work/none.pcd" "$src/samples/animal3d.pcd"
 expect "match bad threshold" 2 "threshold" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --threshold -1
+expect "match old spelling warns" 0 "--no-mirror is deprecated: use --no-allow-mirror" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --method paper --no-mirror
+expect "match weights by name" 0 "similarity" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --weights-3d parts=1,thickness=0
+expect "match bad weight" 2 "weights-3d" -- "$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --weights-3d girth=1
+"$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --weights-3d parts=1,thickness=0,thickness_profile=0,inner_context=0 >"$work/w1.txt" 2>&1
+"$mat" "$src/samples/animal3d.pcd" "$src/samples/snowman3d.pcd" --method parts >"$work/w2.txt" 2>&1
+[ "$(grep -o 'distance [0-9.]*' "$work/w1.txt" | head -1)" = "$(grep -o 'distance [0-9.]*' "$work/w2.txt" | head -1)" ]
+check "match: only the parts weighted is the parts method" $?
+expect "segment old option spelling warns" 0 "--tolerance is deprecated: use --sampling-tolerance" -- "$seg" "$src/samples/star2d.pcd" -o "$work/old" --tolerance 0.5
 expect "2D writes SVG" 0 "svg" -- "$seg" "$src/samples/star2d.pcd" -o "$work/star"
 head -c 4 "$work/star.svg" | grep -q '<svg'; check "SVG starts with <svg" $?
 grep -q '</svg>' "$work/star.svg"; check "SVG is complete" $?

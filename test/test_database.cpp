@@ -278,7 +278,7 @@ TEST (Database, CandidateIndexAlignsTheNearestSummariesFirst)
   EXPECT_NEAR (hits[0].similarity, 1.0, 1e-6);
   EXPECT_NEAR (hits[0].summary_distance, 0.0, 1e-5);
   for (std::size_t r = 0; r < hits.size (); ++r)
-    EXPECT_EQ (hits[r].aligned, r < 5) << r;
+    EXPECT_EQ (hits[r].compared, r < 5) << r;
   for (std::size_t r = 6; r < hits.size (); ++r) // the unaligned follow by summary distance
     EXPECT_LE (hits[r - 1].summary_distance, hits[r].summary_distance);
 
@@ -289,7 +289,7 @@ TEST (Database, CandidateIndexAlignsTheNearestSummariesFirst)
   EXPECT_EQ (db.entries ()[all[0].entry].name, "copy");
   for (std::size_t r = 1; r < all.size (); ++r)
   {
-    EXPECT_TRUE (all[r].aligned);
+    EXPECT_TRUE (all[r].compared);
     EXPECT_GE (all[r - 1].similarity, all[r].similarity);
   }
   // The candidates are compared on several threads; one gives the same hits in the same order.

@@ -3,6 +3,7 @@
  * ranges are checked, old spellings still work, and docs/parameters.md shows the tables as they are.
  */
 #include <pcl_flowseg/common/flow_parameter_table.h>
+#include <pcl_flowseg/signature/match_parameter_table.h>
 #include <pcl_flowseg/signature/parameter_reference.h>
 #include <pcl_flowseg/signature/signature_parameters.h>
 
@@ -61,6 +62,30 @@ TEST (ParameterTable, EveryRowReadsBackWhatItWrites)
   signature.input.mesh_points = 1234;
   signature.input.seed = 4000000000u;
   expectRoundTrip (signatureParameterTable (), signature);
+  MatchParameters match;
+  match.method = MatchMethod::InnerContext;
+  match.weights_3d.parts = 0.25;
+  match.weights_2d.contour = 12.5;
+  match.paper.threshold = 0.3;
+  match.paper.allow_mirror = false;
+  match.paper.alignment_points = 7;
+  expectRoundTrip (matchParameterTable (), match);
+}
+
+TEST (ParameterTable, WeightsAreSetByName)
+{
+  const auto& table = matchParameterTable ();
+  MatchParameters m;
+  const MatchParameters defaults;
+  ASSERT_TRUE (setParameter (table, *findParameter (table, "weights_3d"), m, "thickness=2,inner_context=0"));
+  EXPECT_EQ (m.weights_3d.thickness, 2.0);
+  EXPECT_EQ (m.weights_3d.inner_context, 0.0);
+  EXPECT_EQ (m.weights_3d.parts, defaults.weights_3d.parts); // not named: kept
+  EXPECT_EQ (m.weights_2d.contour, defaults.weights_2d.contour);
+  for (const char* bad : {"thickness=-1", "girth=1", "thickness", "thickness=x",
+                          "parts=0,thickness=0,inner_distance=0,solid_distance=0,inner_profile=0,thickness_profile=0,contour=0,inner_context=0"})
+    EXPECT_FALSE (setParameter (table, *findParameter (table, "weights_3d"), m, bad)) << bad;
+  EXPECT_EQ (m.weights_3d.thickness, 2.0);
 }
 
 TEST (ParameterTable, NamesAndOptionsAreUniqueAndDescribed)
@@ -78,6 +103,8 @@ TEST (ParameterTable, NamesAndOptionsAreUniqueAndDescribed)
   for (const auto& spec : flowParameterTable ().specs)
     check (spec.info);
   for (const auto& spec : signatureParameterTable ().specs)
+    check (spec.info);
+  for (const auto& spec : matchParameterTable ().specs)
     check (spec.info);
   EXPECT_EQ (optionName ("single_view_min_part_share"), "--single-view-min-part-share");
 }

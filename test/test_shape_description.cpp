@@ -425,6 +425,116 @@ TEST_P (DescriptionInvariance, ARescaledCopyIsDescribedExactlyTheSame)
 INSTANTIATE_TEST_SUITE_P (Shapes, DescriptionInvariance,
                           ::testing::Values ("star2d", "hand2d", "dumbbell3d", "snowman3d", "animal3d"));
 
+TEST (DescriptionMatch, WeightsAreParametersOfTheCombinedMethod)
+{
+  const Signature a = signatureOf (flowseg_test::shapeSample ("animal3d", 2000, 1));
+  const Signature b = signatureOf (flowseg_test::shapeSample ("snowman3d", 2000, 1));
+  pcl::SignatureMatcher matcher;
+  const auto by_default = matcher.match (a, b);
+  ASSERT_TRUE (by_default.status);
+  EXPECT_EQ (by_default.similarity, std::exp (-by_default.distance));
+  EXPECT_TRUE (std::isnan (by_default.paper_score));
+  // The combination with only the parts weighed 1 is the parts' method.
+  MatchParameters parts_only;
+  parts_only.weights_3d = DescriptionWeights ();
+  parts_only.weights_3d.parts = 1.0;
+  matcher.setParameters (parts_only);
+  const auto combined = matcher.match (a, b);
+  matcher.setMethod (MatchMethod::Parts);
+  const auto parts = matcher.match (a, b);
+  EXPECT_EQ (combined.distance, parts.distance);
+  EXPECT_EQ (combined.similarity, parts.similarity);
+  // Doubling every weight doubles the distance.
+  MatchParameters doubled;
+  for (double* w : {&doubled.weights_3d.parts, &doubled.weights_3d.thickness, &doubled.weights_3d.thickness_profile,
+                    &doubled.weights_3d.inner_context})
+    *w *= 2.0;
+  EXPECT_EQ (doubled.weights_3d.inner_distance, 0.0);
+  matcher.setParameters (doubled);
+  EXPECT_NEAR (matcher.match (a, b).distance, 2.0 * by_default.distance, 1e-12 * by_default.distance);
+  // Each method's weights: the paper's compares no description.
+  MatchParameters p;
+  EXPECT_EQ (descriptionWeights (p, 3).inner_context, defaultDescriptionWeights (3).inner_context);
+  EXPECT_EQ (descriptionWeights (p, 2).contour, defaultDescriptionWeights (2).contour);
+  p.method = MatchMethod::Paper;
+  const DescriptionWeights none = descriptionWeights (p, 3);
+  EXPECT_EQ (none.parts + none.thickness + none.inner_distance + none.solid_distance + none.inner_profile +
+                 none.thickness_profile + none.contour + none.inner_context,
+             0.0);
+  matcher.setParameters (p);
+  const auto paper = matcher.match (a, b);
+  EXPECT_TRUE (std::isnan (paper.distance));
+  EXPECT_EQ (paper.similarity, paper.paper_score / static_cast<double> (std::max (a.points.size (), b.points.size ())));
+}
+
+TEST (DescriptionMatch, BadWeightsAreRefused)
+{
+  for (double value : {-1.0, std::nan (""), std::numeric_limits<double>::infinity ()})
+  {
+    MatchParameters bad;
+    bad.weights_2d.solid_distance = value;
+    const Status s = checkMatchParameters (bad);
+    EXPECT_FALSE (s);
+    EXPECT_NE (s.message.find ("weights_2d.solid_distance"), std::string::npos) << s.message;
+  }
+  MatchParameters nothing;
+  nothing.weights_3d = DescriptionWeights ();
+  EXPECT_FALSE (checkMatchParameters (nothing));
+  nothing.method = MatchMethod::Thickness; // uses no combined weights
+  EXPECT_TRUE (checkMatchParameters (nothing));
+  // The matcher and the database refuse them too.
+  const Signature s = signatureOf (flowseg_test::shapeSample ("dumbbell3d", 1500));
+  pcl::SignatureMatcher matcher;
+  MatchParameters bad;
+  bad.weights_3d.parts = -1.0;
+  matcher.setParameters (bad);
+  EXPECT_FALSE (matcher.match (s, s).status);
+  SignatureDatabase db;
+  db.add (ShapeEntry{"dumbbell", "dumbbell", s});
+  EXPECT_TRUE (db.query (s, 1, matcher).empty ());
+}
+
+TEST (DescriptionMatch, TheCandidatesFollowTheWeights)
+{
+  SignatureDatabase db;
+  std::uint32_t seed = 1;
+  for (const char* name : {"animal3d", "snowman3d", "dumbbell3d"})
+    for (int copy = 0; copy < 2; ++copy, ++seed)
+      db.add (ShapeEntry{name + std::to_string (copy), name, signatureOf (flowseg_test::shapeSample (name, 1500, seed))});
+  const Signature query = signatureOf (movedCopy ("snowman3d", 1500));
+  pcl::SignatureMatcher parts;
+  parts.setMethod (MatchMethod::Parts);
+  MatchParameters parts_only;
+  parts_only.weights_3d = DescriptionWeights ();
+  parts_only.weights_3d.parts = 1.0;
+  pcl::SignatureMatcher combined;
+  combined.setParameters (parts_only);
+  const auto by_default = db.query (query, 0, pcl::SignatureMatcher (), 2);
+  // One candidate compared: which one follows the weights' summary, so the two agree throughout.
+  for (std::size_t candidates : {1u, 2u, 0u})
+  {
+    const auto expected = db.query (query, 0, parts, candidates);
+    const auto hits = db.query (query, 0, combined, candidates);
+    ASSERT_EQ (hits.size (), expected.size ());
+    for (std::size_t r = 0; r < hits.size (); ++r)
+    {
+      EXPECT_EQ (hits[r].entry, expected[r].entry) << candidates << " " << r;
+      EXPECT_EQ (hits[r].compared, expected[r].compared) << candidates << " " << r;
+      EXPECT_EQ (hits[r].summary_distance, expected[r].summary_distance) << candidates << " " << r;
+      if (hits[r].compared)
+        EXPECT_EQ (hits[r].similarity, expected[r].similarity) << candidates << " " << r;
+    }
+  }
+  // The default's candidate index is not the parts' one.
+  const auto again = db.query (query, 0, pcl::SignatureMatcher (), 2);
+  ASSERT_EQ (again.size (), by_default.size ());
+  for (std::size_t r = 0; r < again.size (); ++r)
+  {
+    EXPECT_EQ (again[r].entry, by_default[r].entry);
+    EXPECT_EQ (again[r].summary_distance, by_default[r].summary_distance);
+  }
+}
+
 TEST (DescriptionMatch, RefusesWhatItCannotCompare)
 {
   const Signature planar = signatureOf (flowseg_test::shapeSample ("star2d", 800));
@@ -511,7 +621,7 @@ TEST (ShapeDescription, TheDatabaseKeepsDescriptionsExactlyAndRanksByThem)
     const auto hits = back.query (query, 3, pcl::SignatureMatcher (), candidates);
     ASSERT_EQ (hits.size (), 3u);
     EXPECT_EQ (back.entries ()[hits[0].entry].name, "animal3d") << candidates;
-    EXPECT_TRUE (hits[0].aligned);
+    EXPECT_TRUE (hits[0].compared);
     EXPECT_EQ (hits[0].similarity, matchWith (MatchMethod::Combined, query, back.entries ()[hits[0].entry].signature));
   }
 }

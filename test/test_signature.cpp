@@ -157,14 +157,14 @@ TEST_P (MatchInvariance, ATransformedResampledCopyScoresAtTheTop)
   const Signature copy = signatureOf (copy_pts);
   pcl::SignatureMatcher matcher = paperMatcher ();
   const auto self = matcher.match (query, copy);
-  EXPECT_GT (self.score, 0.8 * static_cast<double> (query.points.size ()) - 0.2) << name;
+  EXPECT_GT (self.paper_score, 0.8 * static_cast<double> (query.points.size ()) - 0.2) << name;
   // Every other shape of the same dimension scores lower.
   for (const auto& other : sampleShapes ())
   {
     if (other.name == name || (other.dimension == 2) != (name.find ("2d") != std::string::npos))
       continue;
     const Signature o = signatureOf (sampleBoundary (other, n, 5));
-    EXPECT_LT (matcher.match (query, o).score, self.score) << name << " vs " << other.name;
+    EXPECT_LT (matcher.match (query, o).paper_score, self.paper_score) << name << " vs " << other.name;
   }
 }
 
@@ -178,12 +178,12 @@ TEST (Match, SymmetricAndTheTransformMapsPartners)
   pcl::SignatureMatcher matcher = paperMatcher ();
   const auto ab = matcher.match (a, b);
   const auto ba = matcher.match (b, a);
-  EXPECT_DOUBLE_EQ (ab.score, ba.score);
+  EXPECT_DOUBLE_EQ (ab.paper_score, ba.paper_score);
   ASSERT_FALSE (ab.pairs.empty ());
   for (const auto& p : ab.pairs)
   {
     const V mapped = ab.linear * b.points[static_cast<std::size_t> (p.second)].position + ab.translation;
-    EXPECT_LT ((mapped - a.points[static_cast<std::size_t> (p.first)].position).norm (), matcher.getThreshold () + 1e-9);
+    EXPECT_LT ((mapped - a.points[static_cast<std::size_t> (p.first)].position).norm (), matcher.getParameters ().paper.threshold + 1e-9);
   }
   EXPECT_NEAR (std::abs (ab.linear.determinant ()), 1.0, 1e-9);
   EXPECT_NEAR ((ab.linear * ab.linear.transpose () - Eigen::Matrix3d::Identity ()).norm (), 0.0, 1e-9);
@@ -199,11 +199,13 @@ TEST (Match, MirroringIsFoundOnlyWhenAllowed)
     p.position.z () = -p.position.z ();
   pcl::SignatureMatcher matcher = paperMatcher ();
   const auto with = matcher.match (a, b);
-  EXPECT_NEAR (with.score, 4.0, 1e-9);
+  EXPECT_NEAR (with.paper_score, 4.0, 1e-9);
   EXPECT_TRUE (with.mirrored);
-  matcher.setAllowMirror (false);
-  EXPECT_LT (matcher.match (a, b).score, 4.0 - 0.1);
-  EXPECT_NEAR (matcher.match (a, a).score, 4.0, 1e-9);
+  MatchParameters no_mirror = matcher.getParameters ();
+  no_mirror.paper.allow_mirror = false;
+  matcher.setParameters (no_mirror);
+  EXPECT_LT (matcher.match (a, b).paper_score, 4.0 - 0.1);
+  EXPECT_NEAR (matcher.match (a, a).paper_score, 4.0, 1e-9);
 }
 
 TEST (Match, DegenerateSignatures)
@@ -212,15 +214,15 @@ TEST (Match, DegenerateSignatures)
   one.points = {{V::Zero (), 1.0}};
   two.points = {{V::Zero (), 0.6}, {V (1, 0, 0), 0.4}};
   pcl::SignatureMatcher matcher = paperMatcher ();
-  EXPECT_EQ (matcher.match (empty, empty).score, 0.0);
-  EXPECT_EQ (matcher.match (empty, one).score, -1.0);
-  EXPECT_EQ (matcher.match (one, empty).score, -1.0);
-  EXPECT_NEAR (matcher.match (one, one).score, 1.0, 1e-12);
+  EXPECT_EQ (matcher.match (empty, empty).paper_score, 0.0);
+  EXPECT_EQ (matcher.match (empty, one).paper_score, -1.0);
+  EXPECT_EQ (matcher.match (one, empty).paper_score, -1.0);
+  EXPECT_NEAR (matcher.match (one, one).paper_score, 1.0, 1e-12);
   // One point against two: the heavy ones pair up, the light one is unmatched.
   const double expected = 1.0 - 0.4 / 1.6 - 0.4;
-  EXPECT_NEAR (matcher.match (one, two).score, expected, 1e-12);
-  EXPECT_NEAR (matcher.match (two, one).score, expected, 1e-12);
-  EXPECT_NEAR (matcher.match (two, two).score, 2.0, 1e-12);
+  EXPECT_NEAR (matcher.match (one, two).paper_score, expected, 1e-12);
+  EXPECT_NEAR (matcher.match (two, one).paper_score, expected, 1e-12);
+  EXPECT_NEAR (matcher.match (two, two).paper_score, 2.0, 1e-12);
 }
 
 TEST (FeatureSignature, PclStyle)
@@ -244,27 +246,27 @@ TEST (Match, ParametersRoundTripAndAreChecked)
 {
   EXPECT_EQ (pcl::SignatureMatcher ().getMethod (), MatchMethod::Combined); // the default
   pcl::SignatureMatcher matcher = paperMatcher ();
-  EXPECT_EQ (matcher.getThreshold (), MatchParameters ().threshold);
+  EXPECT_EQ (matcher.getParameters ().paper.threshold, PaperMatchParameters ().threshold);
   MatchParameters p;
-  p.threshold = 0.25;
-  p.allow_mirror = false;
-  p.alignment_points = 6;
+  p.paper.threshold = 0.25;
+  p.paper.allow_mirror = false;
+  p.paper.alignment_points = 6;
   p.method = MatchMethod::Paper;
   matcher.setParameters (p);
-  EXPECT_EQ (matcher.getThreshold (), 0.25);
-  EXPECT_FALSE (matcher.getAllowMirror ());
-  EXPECT_EQ (matcher.getAlignmentPoints (), 6);
+  EXPECT_EQ (matcher.getParameters ().paper.threshold, 0.25);
+  EXPECT_FALSE (matcher.getParameters ().paper.allow_mirror);
+  EXPECT_EQ (matcher.getParameters ().paper.alignment_points, 6);
   EXPECT_TRUE (checkMatchParameters (p));
   for (double t : {0.0, -1.0, std::nan ("")})
   {
     MatchParameters bad;
-    bad.threshold = t;
+    bad.paper.threshold = t;
     const Status s = checkMatchParameters (bad);
     EXPECT_FALSE (s);
     EXPECT_NE (s.message.find ("threshold"), std::string::npos) << s.message;
   }
   MatchParameters bad;
-  bad.alignment_points = 0;
+  bad.paper.alignment_points = 0;
   EXPECT_FALSE (checkMatchParameters (bad));
   // The matcher refuses them too, rather than clamping them into something it did not get.
   Signature two;

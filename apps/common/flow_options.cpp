@@ -5,6 +5,7 @@
 #include "common/flow_options.h"
 
 #include <pcl_flowseg/common/flow_parameter_table.h>
+#include <pcl_flowseg/signature/match_parameter_table.h>
 
 #include <iostream>
 #include <limits>
@@ -99,6 +100,8 @@ template void addTableOption (OptionParser&, const pcl_flowseg::ParameterTable<p
                               const std::string&, pcl_flowseg::FlowParameters&);
 template void addTableOption (OptionParser&, const pcl_flowseg::ParameterTable<pcl_flowseg::SignatureParameters>&,
                               const std::string&, pcl_flowseg::SignatureParameters&);
+template void addTableOption (OptionParser&, const pcl_flowseg::ParameterTable<pcl_flowseg::MatchParameters>&,
+                              const std::string&, pcl_flowseg::MatchParameters&);
 
 void
 addSegmentationOptions (OptionParser& p, pcl_flowseg::FlowParameters& params)
@@ -150,35 +153,16 @@ addSignatureOptions (OptionParser& p, SignatureOptions& o)
 void
 addMatchOptions (OptionParser& p, pcl_flowseg::MatchParameters& match)
 {
-  p.number ("--threshold", "T", "largest distance between matched features, in the signatures'\nnormalised unit (paper)",
-            match.threshold, [] (double v) {
-              pcl_flowseg::MatchParameters m;
-              m.threshold = v;
-              return pcl_flowseg::checkMatchParameters (m);
-            });
-  p.count ("--alignment-points", "N", "heaviest features that generate alignments (paper)", match.alignment_points, 0,
-           std::numeric_limits<int>::max (), [] (long long v) {
-             pcl_flowseg::MatchParameters m;
-             m.alignment_points = static_cast<int> (v);
-             return pcl_flowseg::checkMatchParameters (m);
-           });
-  bool* mirror = &match.allow_mirror;
-  p.action ("--no-mirror", "do not match mirror images (paper)", [mirror] () { *mirror = false; });
+  const auto& table = pcl_flowseg::matchParameterTable ();
+  for (const auto& spec : table.specs)
+    if (spec.info.name != "method") // addMatchMethodOption: not every app that matches offers a choice
+      addTableOption (p, table, spec.info.name, match);
 }
 
 void
 addMatchMethodOption (OptionParser& p, pcl_flowseg::MatchParameters& match)
 {
-  std::vector<std::pair<std::string, pcl_flowseg::MatchMethod>> choices;
-  for (pcl_flowseg::MatchMethod m : pcl_flowseg::kMatchMethods)
-    choices.emplace_back (pcl_flowseg::matchMethodName (m), m);
-  p.choice ("--method", "M",
-            "how shapes are compared: flowseg (the components below combined; the best\n"
-            "measured), paper (the paper's weighted points and alignment; --threshold,\n"
-            "--alignment-points and --no-mirror apply to it only), or one component:\n"
-            "parts, thickness, inner, solid, inner-profile, thickness-profile, contour (2D only),\n"
-            "inner-context",
-            match.method, choices);
+  addTableOption (p, pcl_flowseg::matchParameterTable (), "method", match);
 }
 
 void

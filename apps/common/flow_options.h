@@ -37,11 +37,11 @@ using SignatureOptions = pcl_flowseg::SignatureParameters;
 void
 addSignatureOptions (OptionParser& parser, SignatureOptions& options);
 
-/** \brief --threshold T, --alignment-points N, --no-mirror. */
+/** \brief Every option of matchParameterTable() but --method: the weights and the paper's. */
 void
 addMatchOptions (OptionParser& parser, pcl_flowseg::MatchParameters& match);
 
-/** \brief --method M (flowseg, paper, parts, thickness, inner, solid, inner-profile, thickness-profile). */
+/** \brief --method M, as matchParameterTable() describes it. */
 void
 addMatchMethodOption (OptionParser& parser, pcl_flowseg::MatchParameters& match);
 

@@ -5,6 +5,7 @@
 #include "argument_conversion.h"
 
 #include <pcl_flowseg/common/flow_parameter_table.h>
+#include <pcl_flowseg/signature/match_parameter_table.h>
 #include <pcl_flowseg/signature/signature.h>
 
 #include <cmath>
@@ -68,24 +69,6 @@ toFlag (const std::string& name, const ArgumentValue& value, bool& out)
     return badValue (name + ": needs True or False, got " + typeName (value));
   out = *b;
   return {};
-}
-
-/** One of \a choices by name; the enumeration's value is the index. */
-Conversion
-toChoice (const std::string& name, const ArgumentValue& value, const std::vector<std::string>& choices, std::size_t& out)
-{
-  const auto* s = std::get_if<std::string> (&value);
-  std::string all;
-  for (const auto& c : choices)
-    all += (all.empty () ? "'" : ", '") + c + "'";
-  if (s)
-    for (std::size_t i = 0; i < choices.size (); ++i)
-      if (*s == choices[i])
-      {
-        out = i;
-        return {};
-      }
-  return badValue (name + ": needs one of " + all);
 }
 
 Conversion
@@ -216,53 +199,6 @@ signatureGroup (const pcl_flowseg::ParameterInfo& info)
   return info.group == "input" ? kShapeInputArguments : kSignificanceArgument;
 }
 
-using Setter = std::function<Conversion (const std::string&, const ArgumentValue&, CallParameters&, pcl_flowseg::MatchParameters&)>;
-
-struct Keyword
-{
-  ArgumentGroups group;
-  Setter set;
-};
-
-/** The matching keywords. */
-void
-addMatchKeywords (std::map<std::string, Keyword>& k)
-{
-  using MP = pcl_flowseg::MatchParameters;
-  k["method"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
-                   std::vector<std::string> names;
-                   for (pcl_flowseg::MatchMethod method : pcl_flowseg::kMatchMethods)
-                     names.emplace_back (pcl_flowseg::matchMethodName (method));
-                   std::size_t i = 0;
-                   const Conversion r = toChoice (n, v, names, i);
-                   m.method = pcl_flowseg::kMatchMethods[i];
-                   return r;
-                 }};
-  k["threshold"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
-                      return toNumber (n, v, m.threshold);
-                    }};
-  k["allow_mirror"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
-                         return toFlag (n, v, m.allow_mirror);
-                       }};
-  k["alignment_points"] = {kMatchArguments, [] (const std::string& n, const ArgumentValue& v, CallParameters&, MP& m) {
-                             std::int64_t count = 0;
-                             const Conversion r = toCount (n, v, std::numeric_limits<int>::min (), std::numeric_limits<int>::max (), count);
-                             m.alignment_points = static_cast<int> (count);
-                             return r;
-                           }};
-}
-
-const std::map<std::string, Keyword>&
-keywords ()
-{
-  static const std::map<std::string, Keyword> table = [] {
-    std::map<std::string, Keyword> k;
-    addMatchKeywords (k);
-    return k;
-  }();
-  return table;
-}
-
 /** The library's own checks of what the keywords produced, for the groups in use. */
 Conversion
 checkGroups (unsigned groups, const CallParameters& call, const pcl_flowseg::MatchParameters& match)
@@ -281,11 +217,11 @@ checkGroups (unsigned groups, const CallParameters& call, const pcl_flowseg::Mat
 
 namespace {
 
-/** Applies the keyword \a name of the flow or signature table, when \a groups take it: true when
+/** Applies the keyword \a name of the flow, signature or match table, when \a groups take it: true when
   * one of the tables has it (\a result then says how it went, \a canonical names the row). */
 bool
 applyTableKeyword (const std::string& name, const ArgumentValue& value, unsigned groups, CallParameters& call,
-                   Conversion& result, std::string& canonical)
+                   pcl_flowseg::MatchParameters& match, Conversion& result, std::string& canonical)
 {
   std::vector<std::string> warnings;
   if (const auto* spec = pcl_flowseg::findParameter (pcl_flowseg::flowParameterTable (), name))
@@ -301,6 +237,13 @@ applyTableKeyword (const std::string& name, const ArgumentValue& value, unsigned
     pcl_flowseg::SignatureParameters& signature = call;
     result = (groups & signatureGroup (spec->info))
                  ? setFromValue (pcl_flowseg::signatureParameterTable (), *spec, name, value, signature, warnings)
+                 : Conversion{ArgumentError::UnknownName, "unexpected keyword argument '" + name + "'"};
+  }
+  else if (const auto* spec = pcl_flowseg::findParameter (pcl_flowseg::matchParameterTable (), name))
+  {
+    canonical = spec->info.name;
+    result = (groups & kMatchArguments)
+                 ? setFromValue (pcl_flowseg::matchParameterTable (), *spec, name, value, match, warnings)
                  : Conversion{ArgumentError::UnknownName, "unexpected keyword argument '" + name + "'"};
   }
   else
@@ -320,13 +263,8 @@ applyArguments (const Arguments& arguments, unsigned groups, CallParameters& cal
   {
     Conversion r;
     std::string canonical = name;
-    if (!applyTableKeyword (name, value, groups, call, r, canonical))
-    {
-      const auto found = keywords ().find (name);
-      if (found == keywords ().end () || !(groups & found->second.group))
-        return Conversion{ArgumentError::UnknownName, "unexpected keyword argument '" + name + "'"};
-      r = found->second.set (name, value, call, match);
-    }
+    if (!applyTableKeyword (name, value, groups, call, match, r, canonical))
+      return Conversion{ArgumentError::UnknownName, "unexpected keyword argument '" + name + "'"};
     if (!seen.insert (canonical).second)
       return Conversion{ArgumentError::UnknownName, "keyword argument '" + canonical + "' given twice"};
     if (!r)
@@ -357,10 +295,9 @@ signatureArguments (const pcl_flowseg::SignatureParameters& p)
 Arguments
 matchArguments (const pcl_flowseg::MatchParameters& m)
 {
-  return {{"method", std::string (pcl_flowseg::matchMethodName (m.method))},
-          {"threshold", m.threshold},
-          {"allow_mirror", m.allow_mirror},
-          {"alignment_points", static_cast<std::int64_t> (m.alignment_points)}};
+  Arguments a;
+  appendArguments (pcl_flowseg::matchParameterTable (), m, a);
+  return a;
 }
 
 namespace {

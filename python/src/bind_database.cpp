@@ -9,6 +9,8 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 namespace pcl_flowseg_python {
 namespace {
 
@@ -19,8 +21,8 @@ struct Hit
 {
   std::size_t index = 0;
   std::string name, label;
-  double similarity = 0.0, score = 0.0, summary_distance = 0.0;
-  bool aligned = true;
+  double similarity = 0.0, distance = 0.0, paper_score = 0.0, summary_distance = 0.0;
+  bool compared = true;
 };
 
 pcl_flowseg::ShapeEntry
@@ -64,10 +66,7 @@ query (const SignatureDatabase& db, const pcl_flowseg::Signature& signature, std
   }
   std::vector<Hit> out;
   for (const auto& h : hits)
-  {
-    const auto& e = db.entries ()[h.entry];
-    out.push_back ({h.entry, e.name, e.label, h.similarity, h.score, h.summary_distance, h.aligned});
-  }
+    out.push_back ({h.entry, h.name, h.label, h.similarity, h.distance, h.paper_score, h.summary_distance, h.compared});
   return out;
 }
 
@@ -119,10 +118,20 @@ bindHit (py::module_& m)
       .def_readonly ("index", &Hit::index, "Position of the shape in Database.entries().")
       .def_readonly ("name", &Hit::name)
       .def_readonly ("label", &Hit::label)
-      .def_readonly ("similarity", &Hit::similarity, "MatchResult.similarity (NaN when not compared in full).")
-      .def_readonly ("score", &Hit::score)
-      .def_readonly ("aligned", &Hit::aligned, "True when compared in full; false for shapes outside the candidates, ranked by summary distance only.")
-      .def_readonly ("summary_distance", &Hit::summary_distance)
+      .def_readonly ("similarity", &Hit::similarity, "MatchResult.similarity, the ranking key (NaN when not compared).")
+      .def_readonly ("distance", &Hit::distance, "MatchResult.distance (NaN for 'paper' and when not compared).")
+      .def_readonly ("paper_score", &Hit::paper_score, "MatchResult.paper_score (NaN for the other methods and when not compared).")
+      .def_readonly ("compared", &Hit::compared,
+                     "True when compared in full; false for shapes outside the candidates, ranked by summary distance only.")
+      .def_readonly ("summary_distance", &Hit::summary_distance, "Distance between the two shapes' candidate summaries.")
+      .def_property_readonly ("aligned", [] (const Hit& h) {
+            warnDeprecated ("QueryHit.aligned is deprecated: use compared");
+            return h.compared;
+          }, "Deprecated: compared.")
+      .def_property_readonly ("score", [] (const Hit& h) {
+            warnDeprecated ("QueryHit.score is deprecated: use distance (description methods) or paper_score ('paper')");
+            return std::isnan (h.paper_score) ? h.distance : h.paper_score;
+          }, "Deprecated: paper_score for 'paper', distance for the other methods.")
       .def ("__repr__", [] (const Hit& h) { return "<QueryHit " + h.label + " " + h.name + " similarity=" + std::to_string (h.similarity) + ">"; });
 }
 
@@ -133,14 +142,18 @@ bindDatabase (py::module_& m)
 {
   bindHit (m);
   py::class_<SignatureDatabase> (m, "Database",
-                                 "Signatures of many shapes, kept in one text file (the format of flowseg_db).")
+                                 "Signatures of many shapes, kept in one text file (the format of flowseg_db). Any number of "
+                                 "threads may query a Database while others add to it, merge into it or save it.")
       .def (py::init<> (), "An empty database.")
       .def_static ("open", &open, py::arg ("path"), "Reads a database file; OSError when it is missing or damaged.")
       .def ("add", [] (SignatureDatabase& db, const std::string& name, const std::string& label, const pcl_flowseg::Signature& s) {
-            return db.add (makeEntry (name, label, s));
+            const pcl_flowseg::ShapeEntry entry = makeEntry (name, label, s);
+            py::gil_scoped_release release; // waits for the queries running on other threads
+            return db.add (entry);
           }, py::arg ("name"), py::arg ("label"), py::arg ("signature"),
           "Adds a shape (replacing one of the same name); True when it was new.")
-      .def ("merge", &SignatureDatabase::merge, py::arg ("shard"), "Adds every shape of another database, in its order; returns how many were new.")
+      .def ("merge", &SignatureDatabase::merge, py::arg ("shard"), py::call_guard<py::gil_scoped_release> (),
+            "Adds every shape of another database, in its order; returns how many were new.")
       .def ("save", [] (const SignatureDatabase& db, const std::string& path, double lock_wait) {
             pcl_flowseg::Status s;
             {
@@ -151,16 +164,21 @@ bindDatabase (py::module_& m)
           }, py::arg ("path"), py::arg ("lock_wait") = pcl_flowseg::kDefaultLockWait,
           "Writes the whole database (replacing the file) under its lock, atomically: readers see the old or the new file.")
       .def ("query", &query, py::arg ("signature"), py::arg ("k") = pcl_flowseg::kDefaultQueryResults, py::arg ("candidates") = pcl_flowseg::kDefaultCandidates,
-            "The k most similar stored shapes (all when k = 0), aligning the `candidates` nearest by summary (0 = all); "
-            "keywords threshold, allow_mirror, alignment_points.")
+            "The k most similar stored shapes (all when k = 0), comparing in full the `candidates` nearest by summary (0 = all); "
+            "keywords as match().")
       .def ("entries", [] (const SignatureDatabase& db) {
+            std::vector<pcl_flowseg::ShapeEntry> entries;
+            {
+              py::gil_scoped_release release;
+              entries = db.copyEntries ();
+            }
             std::vector<std::tuple<std::string, std::string, pcl_flowseg::Signature>> out;
-            for (const auto& e : db.entries ())
-              out.emplace_back (e.name, e.label, e.signature);
+            for (auto& e : entries)
+              out.emplace_back (std::move (e.name), std::move (e.label), std::move (e.signature));
             return out;
           }, "Every stored shape as (name, label, signature), in file order.")
-      .def ("__len__", &SignatureDatabase::size)
-      .def ("__contains__", &SignatureDatabase::contains)
+      .def ("__len__", &SignatureDatabase::size, py::call_guard<py::gil_scoped_release> ())
+      .def ("__contains__", &SignatureDatabase::contains, py::call_guard<py::gil_scoped_release> ())
       .def_static ("add_to_file", &addToFile, py::arg ("path"), py::arg ("shapes"), py::arg ("lock_wait") = pcl_flowseg::kDefaultLockWait,
                    "Adds (name, label, signature) tuples to a database file in one locked read-modify-write: concurrent "
                    "writers (processes or threads) lose nothing. Returns the number of stored shapes.")

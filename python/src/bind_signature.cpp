@@ -13,6 +13,8 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 namespace pcl_flowseg_python {
 namespace {
 
@@ -180,9 +182,16 @@ bindMatchResult (py::module_& m)
   using Result = pcl::SignatureMatcher::Result;
   py::class_<Result> (m, "MatchResult", "The comparison of two signatures by match().")
       .def_readonly ("similarity", &Result::similarity,
-                     "1 for identical signatures. paper: score over the larger number of points; other methods: exp(-score).")
-      .def_readonly ("score", &Result::score,
-                     "paper: the paper's score (higher is more similar); other methods: the distance (0 = identical).")
+                     "How similar, higher = more similar, 1 for identical signatures (what databases rank by). Description "
+                     "methods: exp(-distance); paper: paper_score over the larger number of points.")
+      .def_readonly ("distance", &Result::distance,
+                     "Description methods: the distance between the descriptions (0 = identical); NaN for 'paper'.")
+      .def_readonly ("paper_score", &Result::paper_score,
+                     "'paper': the paper's raw score of the best alignment (higher = more similar); NaN for the other methods.")
+      .def_property_readonly ("score", [] (const Result& r) {
+            warnDeprecated ("MatchResult.score is deprecated: use distance (description methods) or paper_score ('paper')");
+            return std::isnan (r.paper_score) ? r.distance : r.paper_score;
+          }, "Deprecated: paper_score for 'paper', distance for the other methods.")
       .def_readonly ("linear", &Result::linear, "3x3 rotation (mirrored when its determinant is -1) mapping b onto a.")
       .def_readonly ("translation", &Result::translation)
       .def_readonly ("mirrored", &Result::mirrored)
@@ -205,7 +214,7 @@ bindSignature (py::module_& m)
          "as flowseg_db computes it. Raises OSError when the file cannot be read or segmented.");
   m.def ("match", &match, py::arg ("a"), py::arg ("b"),
          "Compares two signatures; keywords method ('flowseg' default, 'paper', 'parts', 'thickness', 'inner', 'solid', 'inner-profile', 'thickness-profile', 'contour'), "
-         "and for 'paper' threshold, allow_mirror, alignment_points. match(a, b) equals match(b, a) in similarity.");
+         "and for 'paper' threshold, allow_mirror, alignment_points (MatchParameters::paper). match(a, b) equals match(b, a) in similarity.");
 }
 
 } // namespace pcl_flowseg_python

@@ -4,6 +4,8 @@
  */
 #include "python_values.h"
 
+#include <pcl_flowseg/common/parameter_table.h>
+
 #include <pybind11/stl.h>
 
 #include <cstdint>
@@ -43,6 +45,17 @@ toValue (const std::string& name, const py::handle& value)
     return toInt64 (name, value);
   if (py::isinstance<py::str> (value))
     return value.cast<std::string> ();
+  if (py::isinstance<py::dict> (value)) // named weights: {"parts": 3.0, ...} as the text "parts=3,..."
+  {
+    std::string text;
+    for (const auto& [key, item] : py::reinterpret_borrow<py::dict> (value))
+    {
+      if (!py::isinstance<py::str> (key) || isBool (item) || !(PyIndex_Check (item.ptr ()) || PyFloat_Check (item.ptr ())))
+        throw py::value_error (name + ": needs a dict of names to numbers");
+      text += (text.empty () ? "" : ",") + key.cast<std::string> () + "=" + pcl_flowseg::numberText (item.cast<double> ());
+    }
+    return text;
+  }
   if (PyFloat_Check (value.ptr ()) || PyObject_HasAttrString (value.ptr (), "__float__"))
     return value.cast<double> ();
   if ((py::isinstance<py::sequence> (value) && !py::isinstance<py::bytes> (value)) || py::isinstance<py::array> (value))
@@ -148,6 +161,13 @@ raiseOsErrorIfFailed (const pcl_flowseg::Status& status)
     PyErr_SetString (PyExc_OSError, status.message.c_str ());
     throw py::error_already_set ();
   }
+}
+
+void
+warnDeprecated (const char* message)
+{
+  if (PyErr_WarnEx (PyExc_DeprecationWarning, message, 1) != 0)
+    throw py::error_already_set ();
 }
 
 py::array_t<double>

@@ -46,6 +46,10 @@ raiseIfFailed (const pcl_flowseg::Status& status);
 void
 raiseOsErrorIfFailed (const pcl_flowseg::Status& status);
 
+/** \brief Warns with DeprecationWarning \a message (raises when warnings are errors). */
+void
+warnDeprecated (const char* message);
+
 /** \brief An (n, 3) float64 array of \a rows. */
 py::array_t<double>
 rowsToArray (const std::vector<Eigen::Vector3d>& rows);

@@ -53,7 +53,7 @@ def test_parameters_round_trip():
     used = seg.parameters
     for name, value in given.items():
         assert used[name] == value, name
-    assert set(used) == set(fs.defaults()) - {"mesh_points", "seed", "use_sensor_origin", "method", "threshold", "allow_mirror", "alignment_points",
+    assert set(used) == set(fs.defaults()) - {"mesh_points", "seed", "use_sensor_origin", "method", "weights_3d", "weights_2d", "threshold", "allow_mirror", "alignment_points",
                                               "k", "candidates"}
     assert seg.hidden_side_vertices == 0 and seg.interior["island_cells"] == 0
     again = fs.segment(points, **used)

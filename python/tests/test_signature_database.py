@@ -35,10 +35,21 @@ def test_database_add_save_open_query(collection, tmp_path):
     query = fs.signature_of_file(os.path.join(str(collection), "snowman3d", "snowman3d-2.pcd"))
     hits = again.query(query, k=3)
     assert len(hits) == 3 and hits[0].name == "snowman3d/snowman3d-2.pcd" and hits[0].similarity == pytest.approx(1.0)
-    assert hits[0].label == "snowman3d" and hits[0].aligned
+    assert hits[0].label == "snowman3d" and hits[0].compared
     few = again.query(query, k=0, candidates=2)
-    assert len(few) == 9 and sum(h.aligned for h in few) == 2
-    assert all(np.isnan(h.similarity) for h in few if not h.aligned)
+    assert len(few) == 9 and sum(h.compared for h in few) == 2
+    assert all(np.isnan(h.similarity) for h in few if not h.compared)
+    # The description methods give a distance, the paper's method its own score; the old names warn.
+    assert hits[0].distance == pytest.approx(0.0, abs=1e-9) and np.isnan(hits[0].paper_score)
+    assert hits[1].similarity == pytest.approx(np.exp(-hits[1].distance))
+    with pytest.deprecated_call():
+        assert hits[1].aligned == hits[1].compared
+    with pytest.deprecated_call():
+        assert hits[1].score == hits[1].distance
+    paper = again.query(query, k=2, method="paper", alignment_points=3)
+    assert paper[0].paper_score > 0 and np.isnan(paper[0].distance)
+    with pytest.deprecated_call():
+        assert paper[0].score == paper[0].paper_score
 
 
 def test_match_is_symmetric_and_invariant():
@@ -63,12 +74,36 @@ def test_match_is_symmetric_and_invariant():
     assert contexts[:, 1:].sum(axis=1) == pytest.approx([1.0] * 64, abs=1e-4)
     other = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
     assert fs.match(a, other).similarity == pytest.approx(fs.match(other, a).similarity)
-    assert fs.match(a, other, method="paper", threshold=0.2, allow_mirror=False, alignment_points=2).alignments > 0
+    paper = fs.match(a, other, method="paper", threshold=0.2, allow_mirror=False, alignment_points=2)
+    assert paper.alignments > 0 and np.isnan(paper.distance)
+    assert paper.similarity == pytest.approx(paper.paper_score / max(len(a), len(other)))
+    described = fs.match(a, other)
+    assert np.isnan(described.paper_score) and described.similarity == pytest.approx(np.exp(-described.distance))
+    with pytest.deprecated_call():
+        assert described.score == described.distance
     for method in ("flowseg", "parts", "thickness", "inner", "solid", "inner-profile", "thickness-profile",
                    "inner-context"):
         assert fs.match(a, other, method=method).similarity < fs.match(a, b, method=method).similarity, method
     with pytest.raises(ValueError, match="method"):
         fs.match(a, other, method="d2")
+
+
+def test_description_weights_are_keywords_by_name():
+    a = fs.signature(fs.read_points(os.path.join(SAMPLES, "animal3d.pcd"))[0])
+    other = fs.signature(fs.read_points(os.path.join(SAMPLES, "snowman3d.pcd"))[0])
+    names = fs.defaults()["weights_3d"]
+    assert names.startswith("parts=3,") and "inner_context=5" in names
+    only_parts = {name.split("=")[0]: 0.0 for name in names.split(",")}
+    only_parts["parts"] = 2.0
+    weighted = fs.match(a, other, weights_3d=only_parts)
+    assert weighted.distance == pytest.approx(2.0 * fs.match(a, other, method="parts").distance)
+    as_text = ",".join(f"{name}={value}" for name, value in only_parts.items())
+    assert fs.match(a, other, weights_3d=as_text).distance == weighted.distance
+    # 2D weights leave 3D shapes alone; a weight not named keeps its default.
+    assert fs.match(a, other, weights_2d="contour=1").distance == fs.match(a, other).distance
+    for bad in ("parts=-1", "girth=1", {"parts": "x"}, {n: 0 for n in only_parts}, 3.0):
+        with pytest.raises(ValueError):
+            fs.match(a, other, weights_3d=bad)
 
 
 def test_contour_of_a_2d_shape_survives_mirroring():
@@ -100,6 +135,55 @@ def test_concurrent_adds_from_threads_lose_nothing(tmp_path):
     for t in threads:
         t.join()
     assert not errors and len(fs.Database.open(path)) == 16
+
+
+def test_queries_from_threads_while_another_thread_adds(collection):
+    files = fs.list_shape_files(str(collection))
+    signatures = {name: fs.signature_of_file(os.path.join(str(collection), name)) for name in files}
+    db = fs.Database()
+    for name in files[:3]:
+        db.add(name, fs.shape_label(name), signatures[name])
+    labels = {fs.shape_label(name) for name in files}
+    done = threading.Event()
+    errors, counts = [], [0, 0, 0]
+
+    def query(reader, name):
+        try:
+            while True:
+                finished = done.is_set()
+                for method in ("flowseg", "paper"):
+                    hits = db.query(signatures[name], k=0, candidates=4, method=method)
+                    assert 3 <= len(hits) <= 3 + 20, len(hits)
+                    assert hits[0].name == name and hits[0].similarity == pytest.approx(1.0), (hits[0], method)
+                    compared = [h for h in hits if h.compared]
+                    assert len(compared) == min(4, len(hits))
+                    assert all(a.similarity >= b.similarity for a, b in zip(compared, compared[1:]))
+                    assert all(np.isnan(h.similarity) for h in hits if not h.compared)
+                    assert all(h.label in labels for h in hits)
+                assert name in db and 3 <= len(db) <= 3 + 20 and len(db.entries()) >= 3
+                counts[reader] += 1
+                if finished:
+                    break
+        except Exception as error:  # collected, asserted below
+            errors.append(error)
+
+    readers = [threading.Thread(target=query, args=(r, name)) for r, name in enumerate(files[:3])]
+    for t in readers:
+        t.start()
+    try:
+        i = 0  # new shapes, then replacements, and a merge, while every reader queries a few times
+        while (i < 40 or min(counts) < 5) and i < 10000 and not errors:
+            name = files[3 + i % (len(files) - 3)]
+            db.add("extra%02d" % (i % 20), fs.shape_label(name), signatures[name])
+            if i == 20:
+                db.merge(db)
+            i += 1
+    finally:
+        done.set()
+        for t in readers:
+            t.join()
+    assert not errors, errors[0]
+    assert min(counts) >= 5 and len(db) == 3 + 20
 
 
 def test_merge_files_in_order(collection, tmp_path):

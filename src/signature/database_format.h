@@ -30,12 +30,15 @@ struct LineReader
 };
 
 /** \brief Reads the first two lines (magic and version, "shapes N") into \a count; refuses other
-  * versions (version 1 with what to do) and counts the rest of the file cannot hold. */
+  * versions (the older ones, 1 to kDatabaseVersion - 1, with what they lack and what to do) and
+  * counts the rest of the file cannot hold. */
 Status
 readDatabaseHeader (std::istream& in, const std::string& path, std::size_t& count);
 
-/** \brief Reads shape \a s of \a count: its line, points, parts and distributions, then checks it
-  * (checkSignature). Messages name the line. */
+/** \brief Reads shape \a s of \a count: its shape line, p lines (points), q lines (parts with
+  * their remoteness), the t, i, s, r and h lines of a described shape (distributions, profiles),
+  * c lines (contour) and x lines (inner contexts), then checks it (checkSignature). Messages name
+  * the line. */
 Status
 readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e);
 
@@ -43,7 +46,8 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e);
 void
 writeDatabaseHeader (std::ostream& out, std::size_t count);
 
-/** \brief One shape in the file's format. */
+/** \brief One shape in the file's format: doubles with the header's precision, the contour's and
+  * the inner contexts' floats with 9 digits; a shape without parts has no description lines. */
 void
 writeShape (std::ostream& out, const ShapeEntry& e);
 

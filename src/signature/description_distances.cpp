@@ -183,9 +183,8 @@ innerContextDistance (const ShapeDescription& first, const ShapeDescription& sec
 }
 
 double
-descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeDescription& b, int dimension)
+descriptionDistance (const DescriptionWeights& w, const ShapeDescription& a, const ShapeDescription& b)
 {
-  const DescriptionWeights w = descriptionWeights (method, dimension);
   double sum = 0.0;
   if (w.parts > 0.0)
     sum += w.parts * partDistance (a, b);

@@ -46,9 +46,9 @@ thicknessProfileDistance (const ShapeDescription& a, const ShapeDescription& b);
 double
 innerContextDistance (const ShapeDescription& a, const ShapeDescription& b);
 
-/** \brief The distance of \a method (not MatchMethod::Paper) between two non-empty descriptions of
-  * shapes of dimension \a dimension; exactly symmetric. */
+/** \brief The sum of the description distances between two non-empty descriptions, each weighted
+  * by \a weights (descriptionWeights of the method); exactly symmetric. */
 double
-descriptionDistance (MatchMethod method, const ShapeDescription& a, const ShapeDescription& b, int dimension);
+descriptionDistance (const DescriptionWeights& weights, const ShapeDescription& a, const ShapeDescription& b);
 
 } // namespace pcl_flowseg

@@ -5,6 +5,7 @@
 #include <pcl_flowseg/signature/parameter_reference.h>
 
 #include <pcl_flowseg/common/flow_parameter_table.h>
+#include <pcl_flowseg/signature/match_parameter_table.h>
 #include <pcl_flowseg/signature/signature_parameters.h>
 
 namespace pcl_flowseg {
@@ -15,6 +16,7 @@ parameterReferenceMarkdown ()
   std::string out;
   out += "### Segmentation: `FlowParameters`\n\n" + parameterTableMarkdown (flowParameterTable ());
   out += "\n### Signatures: `SignatureParameters`\n\n" + parameterTableMarkdown (signatureParameterTable ());
+  out += "\n### Matching: `MatchParameters`\n\n" + parameterTableMarkdown (matchParameterTable ());
   return out;
 }
 

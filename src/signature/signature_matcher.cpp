@@ -1,5 +1,6 @@
 /*
- * pcl_flowseg - matching two signatures (paper, section 5): alignment search and score.
+ * pcl_flowseg - comparing two signatures: by their descriptions, or by the paper's alignment search
+ * and score (section 5).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include <pcl_flowseg/signature/signature_matcher.h>
@@ -14,23 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-namespace pcl_flowseg {
-
-Status
-checkMatchParameters (const MatchParameters& params)
-{
-  if (!std::isfinite (params.threshold) || params.threshold <= 0.0)
-    return Status::error ("the matcher threshold must be a finite number > 0, got " + std::to_string (params.threshold));
-  if (std::find (std::begin (kMatchMethods), std::end (kMatchMethods), params.method) == std::end (kMatchMethods))
-    return Status::error ("the match method is none of the known ones");
-  if (params.alignment_points < 1 || params.alignment_points > 100)
-    return Status::error ("the alignment points must be a whole number from 1 to 100, got " +
-                          std::to_string (params.alignment_points));
-  return Status::success ();
-}
-
-} // namespace pcl_flowseg
 
 namespace pcl {
 
@@ -150,9 +134,9 @@ public:
       if (!partner_of_a_[i])
         s -= a_.points[i].weight;
     ++best_.alignments;
-    if (s > best_.score)
+    if (s > best_.paper_score)
     {
-      best_.score = s;
+      best_.paper_score = s;
       best_.linear = linear;
       best_.translation = translation;
       best_.mirrored = mirrored;
@@ -216,13 +200,14 @@ scoreAlongAxis (const Signature& a, const Signature& b, std::size_t i, std::size
 SignatureMatcher::Result
 SignatureMatcher::alignOnto (const Signature& a, const Signature& b) const
 {
+  const pcl_flowseg::PaperMatchParameters& paper = params_.paper;
   Result best;
-  best.score = -std::numeric_limits<double>::infinity ();
-  AlignmentScorer scorer (a, b, params_.threshold, best);
-  const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (params_.alignment_points));
-  const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (params_.alignment_points));
+  best.paper_score = -std::numeric_limits<double>::infinity ();
+  AlignmentScorer scorer (a, b, paper.threshold, best);
+  const std::size_t ma = std::min<std::size_t> (a.points.size (), static_cast<std::size_t> (paper.alignment_points));
+  const std::size_t mb = std::min<std::size_t> (b.points.size (), static_cast<std::size_t> (paper.alignment_points));
   const Eigen::Vector3d a0 = a.points[0].position;
-  for (int mirror = 0; mirror < (params_.allow_mirror ? 2 : 1); ++mirror)
+  for (int mirror = 0; mirror < (paper.allow_mirror ? 2 : 1); ++mirror)
   {
     const Eigen::Matrix3d m = mirror ? Eigen::Vector3d (-1, 1, 1).asDiagonal ().toDenseMatrix () : Eigen::Matrix3d::Identity ();
     const Eigen::Vector3d b0 = m * b.points[0].position;
@@ -249,13 +234,14 @@ SignatureMatcher::match (const Signature& a, const Signature& b) const
   if (!r.status)
   {
     PCL_ERROR ("[pcl::SignatureMatcher::match] %s\n", r.status.message.c_str ());
-    r.score = r.similarity = -std::numeric_limits<double>::infinity ();
+    r.similarity = -std::numeric_limits<double>::infinity ();
     return r;
   }
   if (params_.method == pcl_flowseg::MatchMethod::Paper)
     return matchPaper (a, b);
-  r.score = pcl_flowseg::descriptionDistance (params_.method, a.description, b.description, a.dimension); // symmetric
-  r.similarity = std::exp (-r.score);
+  r.distance = pcl_flowseg::descriptionDistance (pcl_flowseg::descriptionWeights (params_, a.dimension), a.description,
+                                                 b.description); // symmetric
+  r.similarity = std::exp (-r.distance);
   return r;
 }
 
@@ -265,17 +251,18 @@ SignatureMatcher::matchPaper (const Signature& a, const Signature& b) const
   Result r;
   if (a.points.empty () || b.points.empty ())
   {
+    r.paper_score = 0.0;
     for (const auto& p : a.points)
-      r.score -= p.weight;
+      r.paper_score -= p.weight;
     for (const auto& p : b.points)
-      r.score -= p.weight;
-    r.similarity = a.points.empty () && b.points.empty () ? 0.0 : r.score;
+      r.paper_score -= p.weight;
+    r.similarity = a.points.empty () && b.points.empty () ? 0.0 : r.paper_score;
     return r;
   }
   Result ab = alignOnto (a, b);
   Result ba = alignOnto (b, a);
   const std::size_t alignments = ab.alignments + ba.alignments;
-  if (ba.score > ab.score)
+  if (ba.paper_score > ab.paper_score)
   {
     // Invert: x_b = L x_a + t  =>  x_a = L^T (x_b - t) (L is orthogonal).
     r = ba;
@@ -287,7 +274,7 @@ SignatureMatcher::matchPaper (const Signature& a, const Signature& b) const
   else
     r = ab;
   r.alignments = alignments;
-  r.similarity = r.score / static_cast<double> (std::max (a.points.size (), b.points.size ()));
+  r.similarity = r.paper_score / static_cast<double> (std::max (a.points.size (), b.points.size ()));
   return r;
 }
 

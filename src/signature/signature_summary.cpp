@@ -41,7 +41,7 @@ namespace {
 
 /** The profiles in 48 numbers: of the inner-distance profiles the mean cumulative sum of each
   * group of 4 rows at every 4th bin, times the bin width in log distance (so that Euclidean distance
-  * follows the profiles' earth mover's distance), times the method's weight for them; then the
+  * follows the profiles' earth mover's distance), times their weight; then the
   * thickness profile less its mean over its rows, times its weight. */
 void
 appendCoarseProfiles (const ShapeDescription& d, const DescriptionWeights& w, std::array<float, kDescriptionSummarySize>& out,
@@ -71,7 +71,7 @@ appendCoarseProfiles (const ShapeDescription& d, const DescriptionWeights& w, st
 
 /** The contour in 30 numbers that neither the start on the outline nor mirroring change: the mean
   * of its histograms with each sector added to its mirror image's (theta and pi - theta), square
-  * roots (Euclidean distance then behaves like chi-square), times the method's weight. */
+  * roots (Euclidean distance then behaves like chi-square), times its weight. */
 void
 appendContourSummary (const ShapeDescription& d, const DescriptionWeights& w, std::array<float, kDescriptionSummarySize>& out,
                       std::size_t& at)
@@ -93,7 +93,7 @@ appendContourSummary (const ShapeDescription& d, const DescriptionWeights& w, st
 
 /** The inner contexts in kContextSummarySize numbers: their mean cumulative histogram times the bin
   * width (the assignment's earth mover's distances are at least the distance of these means) and
-  * their mean thickness times kContextThicknessWeight, times the method's weight. */
+  * their mean thickness times kContextThicknessWeight, times their weight. */
 void
 appendContextSummary (const ShapeDescription& d, const DescriptionWeights& w, std::array<float, kDescriptionSummarySize>& out,
                       std::size_t& at)
@@ -117,13 +117,12 @@ appendContextSummary (const ShapeDescription& d, const DescriptionWeights& w, st
 } // namespace
 
 std::array<float, kDescriptionSummarySize>
-descriptionSummary (const Signature& signature, MatchMethod method)
+descriptionSummary (const Signature& signature, const DescriptionWeights& w)
 {
   std::array<float, kDescriptionSummarySize> out{};
   const ShapeDescription& d = signature.description;
   if (d.empty ())
     return out;
-  const DescriptionWeights w = descriptionWeights (method, signature.dimension);
   std::size_t at = 0;
   for (const auto& [h, weight] : {std::pair<const Distribution*, double> (&d.thickness, w.thickness),
                                   {&d.inner_distance, w.inner_distance}, {&d.solid_distance, w.solid_distance}})

@@ -109,28 +109,30 @@ struct StageTimings
 /** \brief The sample's noise, estimated before the triangulation. */
 struct NoiseEstimate
 {
-  /** Median over the vertices used of the standard deviation of their 16 nearest neighbours along
-    * the neighbourhood's PCA normal (2D: the curve's normal), in the input's unit: about the
-    * noise's standard deviation on a noisy sample, near 0 on a clean dense one (curvature adds a
-    * little). */
+  /** Median over the vertices used of the standard deviation of their nearest neighbours (a fixed
+    * number of them) along the neighbourhood's PCA normal (2D: the curve's normal), in the input's
+    * unit: about the noise's standard deviation on a noisy sample, near 0 on a clean dense one
+    * (curvature adds a little). */
   double sigma = 0.0;
   /** sigma as a share of the bounding-box diagonal of the vertices (dimensionless). */
   double share = 0.0;
   /** Vertices whose neighbourhoods the estimate measured: all, or an evenly spaced
-    * kNoiseEstimatePoints when there are more (their neighbours taken among all vertices, or an
-    * evenly spaced 50,000 of them). */
+    * kNoiseEstimatePoints when there are more (their neighbours taken among all vertices, or among
+    * an evenly spaced subset of them on very large samples). */
   std::size_t points_used = 0;
-  /** Share of those vertices whose 4th nearest neighbour lies more than kIsolatedDistance times
-    * the median such distance away: isolated points, outliers. */
+  /** Share of those vertices whose distance to one of their nearest neighbours (the same rank for
+    * every vertex) is more than kIsolatedDistance times the median such distance: isolated points,
+    * outliers. */
   double isolated_share = 0.0;
-  /** Share of those vertices that lie off the PCA plane (2D: line) of their 15 nearest other
-    * vertices by more than a sample spacing plus twice those neighbours' standard deviation along
-    * its normal: points detached from the surface, outliers near it included. */
+  /** Share of those vertices that lie off the PCA plane (2D: line) of their nearest other vertices
+    * (the neighbourhood of sigma) by more than about a sample spacing plus a few of those
+    * neighbours' standard deviations along its normal: points detached from the surface, outliers
+    * near it included. */
   double detached_share = 0.0;
   /** Median over the vertices used of the standard deviation of their kRoughnessNeighbours nearest
-    * neighbours along the neighbourhood's PCA normal, in sample spacings (the median distance to
-    * the 4th nearest neighbour): too few neighbours to reach across a thin wall, so unlike sigma it
-    * stays near 0 on every clean sample and tells noise (dimensionless). */
+    * neighbours along the neighbourhood's PCA normal, in sample spacings (the median of the
+    * neighbour distances isolated_share compares): too few neighbours to reach across a thin wall,
+    * so unlike sigma it stays near 0 on every clean sample and tells noise (dimensionless). */
   double roughness = 0.0;
 };
 
@@ -138,10 +140,11 @@ struct NoiseEstimate
 constexpr std::size_t kRoughnessNeighbours = 8;
 
 /** \brief Most vertices whose neighbourhoods the noise estimate measures: enough for a stable
-  * median and an isolated share to 0.025%, few enough to cost little next to the triangulation. */
+  * median and a fine-grained isolated share, few enough to cost little next to the triangulation. */
 constexpr std::size_t kNoiseEstimatePoints = 4000;
-/** \brief A vertex is isolated when its 4th nearest neighbour lies this many times the median
-  * distance away (surface samples, noisy or scanned at grazing angles, rarely do). */
+/** \brief A vertex is isolated when the distance to one of its nearest neighbours (the same rank
+  * for every vertex) is this many times the median such distance (surface samples, noisy or
+  * scanned at grazing angles, rarely are). */
 constexpr double kIsolatedDistance = 8.0;
 /** \brief Share of isolated vertices above which automatic outlier removal acts. */
 constexpr double kIsolatedShare = 0.001;
@@ -174,7 +177,7 @@ struct InteriorReport
   std::size_t repaired_cells = 0;
   bool manifold = false; ///< closed, and no non-manifold edge or vertex
   std::size_t ray_cells = 0; ///< cells marked outside by sensor rays (viewpoint given)
-  /** Median over the samples of the surface variation of their 16 nearest neighbours (smallest
+  /** Median over the samples of the surface variation of their nearest neighbours (smallest
     * PCA eigenvalue over the sum; in 2D the same for the curve): small for clean dense samples,
     * large for noisy ones. Computed only when the raw labelling left many samples off its boundary
     * (or denoising is Always); -1 otherwise. */

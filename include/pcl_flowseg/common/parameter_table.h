@@ -40,11 +40,11 @@ struct ParameterInfo
   std::string unit;         ///< "" when dimensionless
   std::string range;        ///< the values it takes, for a person ("finite, > 0")
   std::string description;  ///< one line: what it does
-  std::vector<std::string> choices; ///< Choice: the value names; Weights: the weight names
+  std::vector<std::string> choices = {}; ///< Choice: the value names; Weights: the weight names
   /** Earlier names of the parameter, still accepted with a deprecation warning. */
-  std::vector<std::string> old_names;
+  std::vector<std::string> old_names = {};
   /** Earlier spellings of values (old, current), still accepted with a deprecation warning. */
-  std::vector<std::pair<std::string, std::string>> old_values;
+  std::vector<std::pair<std::string, std::string>> old_values = {};
 };
 
 /** \brief One parameter of the parameter type \a Params: its description and its value as text. */

@@ -1,6 +1,6 @@
 /*
  * pcl_flowseg - the ways two signatures can be compared, their names, and the weights of the
- * description methods.
+ * description distances.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #pragma once
@@ -16,7 +16,7 @@ namespace pcl_flowseg {
 enum class MatchMethod
 {
   /** The module's default ("flowseg"): a weighted sum of the description distances below, with the
-    * weights kCombinedWeights3d or kCombinedWeights2d. */
+    * weights MatchParameters::weights_3d or weights_2d (by default defaultDescriptionWeights). */
   Combined,
   /** The paper's: significant features as weighted points, aligned and scored (section 5). */
   Paper,
@@ -59,32 +59,25 @@ matchMethodName (MatchMethod method);
 Status
 parseMatchMethod (const std::string& name, MatchMethod& method);
 
-/** \brief Weights of the description distances in MatchMethod::Combined. */
+/** \brief The weight of each description distance in a sum of them (MatchMethod::Combined weighs
+  * the distances by MatchParameters::weights_3d or weights_2d; a single-component method weighs
+  * its own distance 1 and the others 0). Finite and >= 0; a weight of 0 leaves its distance out. */
 struct DescriptionWeights
 {
-  double parts = 0.0;
-  double thickness = 0.0;
-  double inner_distance = 0.0;
-  double solid_distance = 0.0;
-  double inner_profile = 0.0;
-  double thickness_profile = 0.0;
-  double contour = 0.0;
-  double inner_context = 0.0;
+  double parts = 0.0;             ///< MatchMethod::Parts
+  double thickness = 0.0;         ///< MatchMethod::Thickness
+  double inner_distance = 0.0;    ///< MatchMethod::InnerDistance
+  double solid_distance = 0.0;    ///< MatchMethod::SolidDistance
+  double inner_profile = 0.0;     ///< MatchMethod::InnerProfile
+  double thickness_profile = 0.0; ///< MatchMethod::ThicknessProfile
+  double contour = 0.0;           ///< MatchMethod::Contour (2D shapes only: 3D shapes have no contour)
+  double inner_context = 0.0;     ///< MatchMethod::InnerContext
 };
 
-/** \brief The combination for 3D shapes, chosen on shrec07_dev and TOSCA together (the best sum of
-  * nearest neighbour and first tier over a grid of weights; docs/method.md). */
-constexpr DescriptionWeights kCombinedWeights3d{3.0, 0.5, 0.0, 0.0, 0.0, 4.0, 0.0, 5.0};
-
-/** \brief The combination for 2D shapes, chosen on Kimia-216 and Tari-1000 together (the best sum of
-  * bull's eye scores over a grid of weights). */
-constexpr DescriptionWeights kCombinedWeights2d{3.0, 0.5, 2.0, 3.0, 8.0, 6.0, 48.0, 0.0};
-
-/** \brief The weight each description distance has under \a method: kCombinedWeights2d or
-  * kCombinedWeights3d (by \a dimension) for Combined, and also for Paper, which compares no
-  * description; 1 for the one distance of a single-component method, 0 for the others. */
+/** \brief The default weights of MatchMethod::Combined for shapes of \a dimension (2, or 3 for any
+  * other value), chosen on labelled collections of such shapes (docs/method.md). */
 DescriptionWeights
-descriptionWeights (MatchMethod method, int dimension);
+defaultDescriptionWeights (int dimension);
 
 /** \brief Weights of a part's attributes in the cost of moving it onto another part (MatchMethod::Parts):
   * the distance between two parts is the Euclidean distance of (weight x attribute), with logs of

@@ -130,7 +130,7 @@ struct ShapeDescription
 
 /** \brief Why \a description is not one describeShape could have made (a message), or success: an
   * empty description, or 1 to kMaxParts parts with weights in (0, 1] ordered by decreasing weight
-  * and summing to 1, lengths finite and > 0 (offset >= 0), ratios in [0, 1], and distributions
+  * and summing to 1, lengths finite and > 0 (remoteness >= 0), ratios in [0, 1], and distributions
   * (also each row of the inner-distance profiles) of entries in [0, 1] summing to 1, and a
   * thickness profile within the thickness range; a contour of 0 or kContourPoints histograms, each
   * of entries in [0, 1] summing to 1; 1 to kDistanceSources inner contexts with histograms likewise

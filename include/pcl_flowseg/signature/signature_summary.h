@@ -1,12 +1,13 @@
 /*
- * pcl_flowseg - a short, rotation-invariant vector that summarises a signature, for picking
- * candidates out of large databases before the full alignment search.
+ * pcl_flowseg - short, rotation-invariant vectors that summarise a signature, for picking
+ * candidates out of large databases before the full comparison.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #pragma once
 
 #include <pcl_flowseg/signature/signature.h>
-#include <pcl_flowseg/signature/signature_matcher.h>
+#include <pcl_flowseg/signature/match_method.h>
+#include <pcl_flowseg/signature/shape_description.h>
 
 #include <array>
 
@@ -34,8 +35,8 @@ constexpr std::size_t kContextSummarySize = kContextBins + 1;
 constexpr std::size_t kDescriptionSummarySize =
     3 * kDistributionBins + 12 + 32 + kProfileRows + kContourSummarySize + kContextSummarySize;
 
-/** \brief A vector in which shapes whose descriptions are near under \a method (not
-  * MatchMethod::Paper) lie close together (Euclidean distance): the square roots of the three
+/** \brief A vector in which shapes whose descriptions are near (in the sum of description distances
+  * weighted by \a weights) lie close together (Euclidean distance): the square roots of the three
   * distributions' bins (so that Euclidean distance behaves like the L1 and chi-square distances),
   * then the mean and spread of the parts' attribute points (with the masses the parts' earth
   * mover's distance gives them, kPartMassExponent), then the inner-distance
@@ -43,10 +44,9 @@ constexpr std::size_t kDescriptionSummarySize =
   * profile less its mean, and the square roots of the contour's mean histogram folded onto its
   * mirror image (kContourSummarySize), the inner contexts' mean cumulative histogram (times the bin
   * width) and mean thickness (times kContextThicknessWeight) (kContextSummarySize), each block
-  * scaled by the method's weight for it (kCombinedWeights3d / 2d; 1 for the single method, 0 for
-  * the others).
-  * Zero for a signature without a description. */
+  * scaled by its distance's weight in \a weights (for a method: descriptionWeights (parameters,
+  * signature.dimension)). Zero for a signature without a description. */
 std::array<float, kDescriptionSummarySize>
-descriptionSummary (const Signature& signature, MatchMethod method);
+descriptionSummary (const Signature& signature, const DescriptionWeights& weights);
 
 } // namespace pcl_flowseg
