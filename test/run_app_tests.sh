@@ -179,7 +179,7 @@ grep -q '"detached_share": 0\.0*[1-9]' "$work/out.json"; check "the JSON reports
 expect "outliers kept on request" 0 " 0 outliers)" -- "$seg" "$work/out.pcd" --outliers off -o "$work/out"
 expect "smoothing forced" 0 ", 2 smoothing pass\(es\)" -- "$seg" "$work/out.pcd" --smooth on --smooth-passes 2 -o "$work/smooth"
 grep -q '^  "smoothing_passes": 2,' "$work/smooth.json"; check "the JSON records the smoothing passes made" $?
-grep -q '"smoothing": "always", "smoothing_passes": 2' "$work/smooth.json"; check "the JSON records the smoothing asked for" $?
+grep -q '"smoothing": "on", "smoothing_passes": 2' "$work/smooth.json"; check "the JSON records the smoothing asked for" $?
 expect "noisy sample" 0 "noise sigma" -- "$smp" "$work/tet.off" -n 3000 --noise 0.005 -o "$work/noisy.pcd"
 expect "noisy sample smoothed automatically" 0 "roughness 0\.[1-9][0-9]*, .*, [1-6] smoothing pass\(es\)" -- "$seg" "$work/noisy.pcd" -o "$work/noisy"
 expect "smoothing off" 0 ", 0 smoothing pass\(es\)" -- "$seg" "$work/noisy.pcd" --smooth off -o "$work/noisy"

@@ -4,9 +4,12 @@
  */
 #include <pcl_flowseg/io/segmentation_json.h>
 
+#include <pcl_flowseg/common/flow_parameter_table.h>
 #include <pcl_flowseg/io/atomic_file.h>
 #include <pcl_flowseg/io/json_text.h>
 
+#include <cstdlib>
+#include <optional>
 #include <ostream>
 #include <vector>
 
@@ -36,39 +39,56 @@ sideName (FeatureSide side)
   return side == FeatureSide::Interior ? "interior" : side == FeatureSide::Exterior ? "exterior" : "both";
 }
 
-/** An Automatic / Off / Always mode (OutlierRemoval, Smoothing, Denoising) as a quoted JSON name. */
-template <typename Mode>
-const char*
-modeJson (Mode mode)
+/** The value of a parameter table row's \a text as JSON. */
+std::string
+parameterJson (const ParameterInfo& info, const std::string& text)
 {
-  return mode == Mode::Automatic ? "\"auto\"" : mode == Mode::Off ? "\"off\"" : "\"always\"";
+  switch (info.type)
+  {
+  case ParameterType::Number:
+    return num (std::strtod (text.c_str (), nullptr));
+  case ParameterType::Count:
+  case ParameterType::Switch:
+    return text;
+  case ParameterType::Point:
+  {
+    std::optional<Eigen::Vector3d> point;
+    parsePoint (text, point);
+    return point ? vec (*point, 3) : std::string ("null");
+  }
+  case ParameterType::Choice:
+  case ParameterType::Weights:
+    break;
+  }
+  return jsonString (text);
 }
 
-/** The parameters as one JSON object, in the groups of FlowParameters. */
+/** The parameters as one JSON object, a member per row of flowParameterTable (its name and
+  * spelling), in the table's groups; a group of one row of the same name is that member alone. */
 std::string
 parametersJson (const FlowParameters& p)
 {
-  const DimensionMode d = p.preparation.dimension;
-  std::string s = "{\"preparation\": {\"dimension\": ";
-  s += d == DimensionMode::Automatic ? "\"auto\"" : d == DimensionMode::Planar ? "2" : "3";
-  s += ", \"planar_tolerance\": " + num (p.preparation.planar_tolerance) + ", \"outliers\": ";
-  s += modeJson (p.preparation.outliers);
-  s += ", \"smoothing\": ";
-  s += modeJson (p.preparation.smoothing);
-  s += ", \"smoothing_passes\": " + std::to_string (p.preparation.smoothing_passes) + "}";
-  s += ", \"merge\": {\"rho\": " + num (p.merge.rho) + ", \"sampling_tolerance\": " + num (p.merge.sampling_tolerance) +
-       ", \"stump_ratio\": " + num (p.merge.stump_ratio) + ", \"compact_rho\": " + num (p.merge.compact_rho) +
-       ", \"compact_size\": " + num (p.merge.compact_size) + ", \"min_part_share\": " + num (p.merge.min_part_share) +
-       ", \"single_view_min_part_share\": " + num (p.merge.single_view_min_part_share) + "}";
-  s += ", \"interior\": {\"separate\": " + std::string (jsonBool (p.interior.separate)) + ", \"denoising\": ";
-  s += modeJson (p.interior.denoising);
-  s += ", \"manifold_repair\": " + std::string (jsonBool (p.interior.manifold_repair));
-  s += ", \"hidden_side\": " + std::string (jsonBool (p.interior.hidden_side));
-  s += ", \"viewpoint\": " + (p.interior.viewpoint ? vec (*p.interior.viewpoint, 3) : std::string ("null")) + "}";
-  s += ", \"features\": \"" + std::string (sideName (p.features)) + "\"";
-  s += ", \"execution\": {\"threads\": " + std::to_string (p.execution.threads) +
-       ", \"memory_limit\": " + std::to_string (p.execution.memory_limit) + "}}";
-  return s;
+  std::string s = "{", group;
+  for (const auto& spec : flowParameterTable ().specs)
+  {
+    const std::string value = parameterJson (spec.info, spec.get (p));
+    if (spec.info.group != group)
+    {
+      s += group.empty () || group == "features" ? "" : "}";
+      s += (group.empty () ? "\"" : ", \"") + spec.info.group + "\": ";
+      group = spec.info.group;
+      if (spec.info.name == group)
+      {
+        s += value;
+        continue;
+      }
+      s += "{";
+    }
+    else
+      s += ", ";
+    s += "\"" + spec.info.name + "\": " + value;
+  }
+  return s + (group == "features" ? "}" : "}}");
 }
 
 void
