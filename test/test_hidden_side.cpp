@@ -22,26 +22,7 @@ using V = Eigen::Vector3d;
 
 namespace {
 
-/** Appends a UV sphere of \a radius around \a centre (64 x 32 quads). */
-void
-addSphere (TriangleMesh& mesh, const V& centre, double radius)
-{
-  constexpr int kAround = 64, kDown = 32;
-  const int base = static_cast<int> (mesh.vertices.size ());
-  for (int i = 0; i <= kDown; ++i)
-    for (int j = 0; j < kAround; ++j)
-    {
-      const double theta = M_PI * i / kDown, phi = 2.0 * M_PI * j / kAround;
-      mesh.vertices.push_back (centre + radius * V (std::sin (theta) * std::cos (phi), std::sin (theta) * std::sin (phi), std::cos (theta)));
-    }
-  const auto at = [&] (int i, int j) { return base + i * kAround + (j % kAround); };
-  for (int i = 0; i < kDown; ++i)
-    for (int j = 0; j < kAround; ++j)
-    {
-      mesh.faces.push_back ({at (i, j), at (i + 1, j), at (i + 1, j + 1)});
-      mesh.faces.push_back ({at (i, j), at (i + 1, j + 1), at (i, j + 1)});
-    }
-}
+using flowseg_test::addSphere;
 
 std::vector<V>
 scan (const TriangleMesh& mesh, const V& viewpoint, std::size_t points)

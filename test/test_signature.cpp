@@ -54,24 +54,8 @@ TriangleMesh
 twoBalls ()
 {
   TriangleMesh mesh;
-  constexpr int kAround = 32, kDown = 16;
-  for (const auto& [centre, radius] : {std::pair<V, double> (V::Zero (), 1.0), std::pair<V, double> (V (1.5, 0, 0), 0.6)})
-  {
-    const int base = static_cast<int> (mesh.vertices.size ());
-    for (int i = 0; i <= kDown; ++i)
-      for (int j = 0; j < kAround; ++j)
-      {
-        const double theta = M_PI * i / kDown, phi = 2.0 * M_PI * j / kAround;
-        mesh.vertices.push_back (centre + radius * V (std::sin (theta) * std::cos (phi), std::sin (theta) * std::sin (phi), std::cos (theta)));
-      }
-    const auto at = [&] (int i, int j) { return base + i * kAround + (j % kAround); };
-    for (int i = 0; i < kDown; ++i)
-      for (int j = 0; j < kAround; ++j)
-      {
-        mesh.faces.push_back ({at (i, j), at (i + 1, j), at (i + 1, j + 1)});
-        mesh.faces.push_back ({at (i, j), at (i + 1, j + 1), at (i, j + 1)});
-      }
-  }
+  flowseg_test::addSphere (mesh, V::Zero (), 1.0, 32, 16);
+  flowseg_test::addSphere (mesh, V (1.5, 0, 0), 0.6, 32, 16);
   return mesh;
 }
 

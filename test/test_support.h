@@ -6,11 +6,13 @@
 
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/evaluation/shape_generator.h>
+#include <pcl_flowseg/io/mesh_io.h>
 #include <pcl_flowseg/signature/signature.h>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <random>
@@ -152,6 +154,28 @@ sharedDataPath (const std::string& relative)
     return "";
   std::fclose (f);
   return path;
+}
+
+/** \brief Appends a UV sphere of \a radius around \a centre (\a around x \a down quads, two
+  * triangles each) to \a mesh. */
+inline void
+addSphere (pcl_flowseg::TriangleMesh& mesh, const Eigen::Vector3d& centre, double radius, int around = 64, int down = 32)
+{
+  const int base = static_cast<int> (mesh.vertices.size ());
+  for (int i = 0; i <= down; ++i)
+    for (int j = 0; j < around; ++j)
+    {
+      const double theta = M_PI * i / down, phi = 2.0 * M_PI * j / around;
+      mesh.vertices.push_back (centre + radius * Eigen::Vector3d (std::sin (theta) * std::cos (phi),
+                                                                  std::sin (theta) * std::sin (phi), std::cos (theta)));
+    }
+  const auto at = [&] (int i, int j) { return base + i * around + (j % around); };
+  for (int i = 0; i < down; ++i)
+    for (int j = 0; j < around; ++j)
+    {
+      mesh.faces.push_back ({at (i, j), at (i + 1, j), at (i + 1, j + 1)});
+      mesh.faces.push_back ({at (i, j), at (i + 1, j + 1), at (i, j + 1)});
+    }
 }
 
 } // namespace flowseg_test

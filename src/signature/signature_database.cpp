@@ -105,16 +105,7 @@ SignatureDatabase::SignatureDatabase (const SignatureDatabase& other)
 
 SignatureDatabase::SignatureDatabase (SignatureDatabase&& other) noexcept
 {
-  WriteLock lock (other.writer_gate_, other.entries_mutex_);
-  entries_ = std::move (other.entries_);
-  by_name_ = std::move (other.by_name_);
-  candidates_ = other.candidates_.load ();
-  query_threads_ = other.query_threads_.load ();
-  other.entries_.clear ();
-  other.by_name_.clear ();
-  std::lock_guard<std::mutex> indexes (other.index_mutex_);
-  indexes_ = std::move (other.indexes_);
-  other.indexes_.clear ();
+  *this = std::move (other); // this one is new: nobody else can hold its locks
 }
 
 SignatureDatabase&
