@@ -5,6 +5,7 @@
  */
 #include "common/options.h"
 
+#include <pcl_flowseg/common/flow_parameters.h>
 #include <pcl_flowseg/io/mesh_io.h>
 #include <pcl_flowseg/io/point_cloud_writer.h>
 #include <pcl_flowseg/io/range_scan.h>
@@ -180,6 +181,9 @@ main (int argc, char** argv)
   declareScanOptions (p, o);
   p.count ("--seed", "S", "random seed", o.seed, 0, 4294967295LL);
   p.flag ("--binary", "binary PCD (default ASCII)", o.binary);
+  unsigned threads = 0;
+  p.count ("-j, --threads", "N", "accepted as every app accepts it; sampling and scanning one mesh run on one thread",
+           threads, 0, pcl_flowseg::kMaxThreads);
   p.flag ("-q, --quiet", "no summary on stderr", o.quiet);
   p.epilogue ("Exit status: 0 success, 1 unreadable input or unwritable output, 2 bad options.");
   std::vector<std::string> inputs;

@@ -433,6 +433,7 @@ all_apps=(flowseg_segment flowseg_sample flowseg_make_samples flowseg_signature 
 for app in "${all_apps[@]}"; do
   expect "$app -h" 0 "^Usage: $app" -- "$build/apps/$app" -h
   "$build/apps/$app" --help | grep -qE '^  -q, --quiet '; check "$app takes -q" $?
+  "$build/apps/$app" --help | grep -qE '^  -j, --threads N '; check "$app takes -j" $?
 done
 for app in "${scan_apps[@]}"; do
   "$build/apps/$app" --help | grep -q -- "-j, --threads N        worker threads: 0 = all cores, 1 = sequential; the result is the same for"
