@@ -210,6 +210,8 @@ checkGroups (unsigned groups, const CallParameters& call, const pcl_flowseg::Mat
     return badValue (s.message);
   if ((groups & kMatchArguments) && !(s = pcl_flowseg::checkMatchParameters (match)))
     return badValue (s.message);
+  if (call.input.use_sensor_origin && call.flow.interior.viewpoint)
+    return badValue ("viewpoint and use_sensor_origin exclude each other: give one");
   return {};
 }
 

@@ -238,3 +238,37 @@ def test_bad_input_raises(tmp_path):
         fs.match(sig, sig, rho=2)
     with pytest.raises(TypeError):
         fs.Database().query(sig, k=-1)
+
+
+def _two_balls_off(path):
+    """Two UV spheres side by side (radii 1 and 0.6) as an OFF mesh."""
+    vertices, faces = [], []
+    for centre, radius in (((0.0, 0.0, 0.0), 1.0), ((1.5, 0.0, 0.0), 0.6)):
+        base = len(vertices)
+        for i in range(17):
+            for j in range(32):
+                theta, phi = np.pi * i / 16, 2 * np.pi * j / 32
+                vertices.append([centre[0] + radius * np.sin(theta) * np.cos(phi),
+                                 centre[1] + radius * np.sin(theta) * np.sin(phi), centre[2] + radius * np.cos(theta)])
+        at = lambda i, j: base + i * 32 + j % 32
+        for i in range(16):
+            for j in range(32):
+                faces += [(at(i, j), at(i + 1, j), at(i + 1, j + 1)), (at(i, j), at(i + 1, j + 1), at(i, j + 1))]
+    with open(path, "w") as f:
+        f.write(f"OFF\n{len(vertices)} {len(faces)} 0\n")
+        f.writelines(f"{x} {y} {z}\n" for x, y, z in vertices)
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in faces)
+
+
+def test_signature_of_a_scan_file_from_its_own_viewpoint(tmp_path):
+    mesh, scan = str(tmp_path / "balls.off"), str(tmp_path / "scan.pcd")
+    _two_balls_off(mesh)
+    subprocess.run([app("flowseg_sample"), mesh, "--scan-from", "0.5,0,12", "-n", "3000", "-o", scan, "-q"], check=True)
+    own = fs.signature_of_file(scan, use_sensor_origin=True)
+    assert len(own) == 2  # both balls, seen from the front, each a part
+    assert fs.match(own, fs.signature_of_file(scan, viewpoint=(0.5, 0.0, 12.0))).similarity == pytest.approx(1.0)
+    assert fs.match(own, fs.signature_of_file(scan)).similarity < 1.0
+    with pytest.raises(ValueError, match="viewpoint"):
+        fs.signature_of_file(scan, use_sensor_origin=True, viewpoint=(0.5, 0.0, 12.0))
+    with pytest.raises(OSError, match="sensor origin"):
+        fs.signature_of_file(mesh, use_sensor_origin=True)
