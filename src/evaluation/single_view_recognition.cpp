@@ -18,7 +18,7 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
+#include <ctime>
 #include <map>
 #include <optional>
 
@@ -26,12 +26,20 @@ namespace pcl_flowseg {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+/** The CPU time of the calling thread, in ms: what describing and comparing cost, whatever else
+  * shares the cores (every job runs on one thread). */
+double
+threadMs ()
+{
+  timespec t{};
+  clock_gettime (CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double> (t.tv_sec) * 1e3 + static_cast<double> (t.tv_nsec) * 1e-6;
+}
 
 double
-msSince (Clock::time_point t)
+msSince (double start)
 {
-  return std::chrono::duration<double, std::milli> (Clock::now () - t).count ();
+  return threadMs () - start;
 }
 
 /** The descriptions of a model or query, by what describes them (RecognitionMethodKind). */
@@ -90,8 +98,7 @@ describeViews (const std::string& path, const std::vector<Eigen::Vector3d>& dire
 
 /** Reads model \a i and describes it as the methods need. */
 void
-describeModel (const ShapeCollection& models, const SingleViewRecognitionParameters& params, unsigned job_threads,
-               std::size_t i, ModelDatabase& db)
+describeModel (const ShapeCollection& models, const SingleViewRecognitionParameters& params, std::size_t i, ModelDatabase& db)
 {
   const std::string path = models.root + "/" + models.files[i];
   db.labels[i] = shapeLabel (models.files[i]);
@@ -101,22 +108,22 @@ describeModel (const ShapeCollection& models, const SingleViewRecognitionParamet
   Status s = loadShapeSample (path, input, points);
   if (s && db.needed[kSignatureKind])
   {
-    const auto t0 = Clock::now ();
+    const double t0 = threadMs ();
     FlowParameters flow = params.flow;
     flow.interior.viewpoint.reset ();
-    flow.execution.threads = job_threads;
+    flow.execution.threads = 1; // the jobs share the cores; the thread's CPU time is the cost
     s = signatureOfPoints (points, flow, params.signature.significance, db.signatures[i]);
     db.ms[i][kSignatureKind] = msSince (t0);
   }
   if (s && db.needed[kEsfKind])
   {
-    const auto t0 = Clock::now ();
+    const double t0 = threadMs ();
     s = esfDescriptor (points, db.esf[i]);
     db.ms[i][kEsfKind] = msSince (t0);
   }
   if (s && db.needed[kViewsKind])
   {
-    const auto t0 = Clock::now ();
+    const double t0 = threadMs ();
     s = describeViews (path, db.directions, db.renderable[i], db.views[i]);
     db.ms[i][kViewsKind] = msSince (t0);
   }
@@ -140,9 +147,8 @@ describeModels (const ShapeCollection& models, const SingleViewRecognitionParame
   if (db.needed[kViewsKind])
     if (const Status s = viewSphereDirections (params.views, db.directions); !s)
       return s;
-  const unsigned job_threads = threadsPerJob (n, params.threads);
   runParallelJobs (
-      n, params.threads, [&] (std::size_t i) { describeModel (models, params, job_threads, i, db); },
+      n, params.threads, [&] (std::size_t i) { describeModel (models, params, i, db); },
       [&] (std::size_t done, std::size_t) {
         if (progress)
           progress ("describing models", done, n);
@@ -200,24 +206,24 @@ struct QueryDescription
 
 Status
 describeQuery (const std::string& path, const QueryPlan& plan, const SingleViewRecognitionParameters& params,
-               unsigned job_threads, QueryDescription& d)
+               QueryDescription& d)
 {
   std::vector<Eigen::Vector3d> points;
   std::optional<Eigen::Vector3d> origin;
   Status s = loadShapeSample (path, params.signature.input, points, &origin);
   if (s && plan.needed[kSignatureKind])
   {
-    const auto t0 = Clock::now ();
+    const double t0 = threadMs ();
     FlowParameters flow = params.flow;
     if (params.signature.input.use_sensor_origin)
       flow.interior.viewpoint = origin; // this scan's own
-    flow.execution.threads = job_threads;
+    flow.execution.threads = 1; // the jobs share the cores; the thread's CPU time is the cost
     s = signatureOfPoints (points, flow, params.signature.significance, d.signature);
     d.ms[kSignatureKind] = msSince (t0);
   }
   if (s && (plan.needed[kEsfKind] || plan.needed[kViewsKind]))
   {
-    const auto t0 = Clock::now ();
+    const double t0 = threadMs ();
     s = esfDescriptor (points, d.esf);
     d.ms[kEsfKind] = d.ms[kViewsKind] = msSince (t0);
   }
@@ -227,13 +233,13 @@ describeQuery (const std::string& path, const QueryPlan& plan, const SingleViewR
 /** Describes query \a q and compares it with every model by every method that runs. */
 void
 compareQuery (const std::string& path, const QueryPlan& plan, const ModelDatabase& db,
-              const SingleViewRecognitionParameters& params, unsigned job_threads, QueryRows& out)
+              const SingleViewRecognitionParameters& params, QueryRows& out)
 {
   const std::size_t n = db.labels.size ();
   out.similarity.assign (plan.methods.size (), {});
   out.ms.assign (plan.methods.size (), 0.0);
   QueryDescription d;
-  if (const Status s = describeQuery (path, plan, params, job_threads, d); !s)
+  if (const Status s = describeQuery (path, plan, params, d); !s)
   {
     out.error = s.message.find (path) == std::string::npos ? path + ": " + s.message : s.message;
     return;
@@ -242,7 +248,7 @@ compareQuery (const std::string& path, const QueryPlan& plan, const ModelDatabas
   {
     if (!plan.skipped[m].empty ())
       continue;
-    const auto t0 = Clock::now ();
+    const double t0 = threadMs ();
     std::vector<double>& row = out.similarity[m];
     row.resize (n);
     const RecognitionMethodKind kind = plan.methods[m].kind;
@@ -323,11 +329,10 @@ evaluateSingleViewRecognition (const ShapeCollection& models, const ShapeCollect
     return s;
   const QueryPlan plan = planQueries (methods, models, db, params.match);
   const std::size_t n = queries.files.size ();
-  const unsigned job_threads = threadsPerJob (n, params.threads);
   std::vector<QueryRows> rows (n);
   runParallelJobs (
       n, params.threads,
-      [&] (std::size_t q) { compareQuery (queries.root + "/" + queries.files[q], plan, db, params, job_threads, rows[q]); },
+      [&] (std::size_t q) { compareQuery (queries.root + "/" + queries.files[q], plan, db, params, rows[q]); },
       [&] (std::size_t done, std::size_t) {
         if (progress)
           progress ("recognising queries", done, n);

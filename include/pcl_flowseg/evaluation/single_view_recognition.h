@@ -37,7 +37,9 @@ struct SingleViewRecognitionParameters
   SignatureParameters signature;
   MatchParameters match; ///< how signatures are compared (the method is each RecognitionMethod's)
   std::size_t views = 42; ///< views rendered per model for esf-views (viewSphereDirections)
-  unsigned threads = 0;   ///< 0 = all cores; models and queries are described in parallel
+  /** 0 = all cores: so many models, then queries, are described at once, each on one thread (the
+    * segmentation's own threads are not used, flow.execution.threads is ignored). */
+  unsigned threads = 0;
 };
 
 /** \brief One method's recognition over the queries. */
@@ -47,11 +49,11 @@ struct MethodRecognition
   std::string skipped; ///< why the method was not evaluated, or "" (then the rest is filled in)
   RecognitionScores scores;
   std::vector<ClassRecognitionScores> per_class;
-  /** Mean time per query, in ms of one thread: describing the query and comparing it with every
-    * model (reading the file not included). */
+  /** Mean cost per query, in ms of CPU time of the one thread that does it: describing the query
+    * and comparing it with every model (reading the file not included). */
   double query_ms = 0.0;
   std::vector<double> class_query_ms; ///< the same per class, in the order of per_class
-  double model_ms = 0.0;              ///< mean time to describe one model for the database
+  double model_ms = 0.0;              ///< mean CPU time to describe one model for the database
 };
 
 /** \brief Told the stage ("describing models", "recognising queries"), jobs done and their number. */
