@@ -9,9 +9,11 @@
 #include "common/progress.h"
 
 #include <pcl_flowseg/common/parallel_jobs.h>
+#include <pcl_flowseg/evaluation/recognition_report.h>
 #include <pcl_flowseg/evaluation/retrieval_report.h>
 #include <pcl_flowseg/evaluation/retrieval_scores.h>
 #include <pcl_flowseg/evaluation/shape_distributions.h>
+#include <pcl_flowseg/evaluation/view_sphere.h>
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/signature/signature.h>
@@ -23,7 +25,9 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -42,10 +46,17 @@ msSince (Clock::time_point t)
   return std::chrono::duration<double, std::milli> (Clock::now () - t).count ();
 }
 
+constexpr const char* kRetrievalMethods =
+    "flowseg,paper,parts,thickness,inner,solid,inner-profile,thickness-profile,contour,inner-context,d2,esf";
+constexpr const char* kRecognitionMethods = "flowseg,esf,esf-views";
+constexpr std::size_t kRecognitionMeshPoints = 10000; // the single-view protocol's database samples
+
 struct Options
 {
   std::string output;
-  std::string methods = "flowseg,paper,parts,thickness,inner,solid,inner-profile,thickness-profile,contour,inner-context,d2,esf";
+  std::string methods = kRetrievalMethods;
+  std::string queries;    ///< single-view recognition: the folder of scans
+  std::size_t views = 42; ///< single-view recognition: views rendered per model (esf-views)
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
   pcl_flowseg::MatchParameters match;
@@ -58,7 +69,7 @@ struct Options
 OptionParser
 makeParser (Options& o)
 {
-  OptionParser p ("flowseg_eval", "flowseg_eval ROOT -o OUTDIR [options]",
+  OptionParser p ("flowseg_eval", "flowseg_eval ROOT -o OUTDIR [options]\n       flowseg_eval ROOT --queries SCANS -o OUTDIR [options]",
                   "Every shape file below ROOT is a query against all others (class = name of the folder holding\n"
                   "the file). For each method: OUTDIR/similarity_METHOD.csv (higher = more similar; header row and\n"
                   "first column name the shapes in one order), OUTDIR/similarity_METHOD.png (row i: the 5 best\n"
@@ -70,7 +81,13 @@ makeParser (Options& o)
                   "thickness-profile, contour (2D only), inner-context (as flowseg_match compares them), d2 (Osada's\n"
                   "D2 shape distribution on the same points), esf (PCL's Ensemble of Shape Functions).");
   p.text ("-o, --output", "DIR", "output folder (created), required", o.output);
-  p.text ("--methods", "LIST", "comma-separated, any of the methods above", o.methods);
+  p.text ("--methods", "LIST", "comma-separated, any of the methods above (single-view recognition: below)", o.methods);
+  p.text ("--queries", "DIR", "single-view recognition: the scans below DIR are the queries, the shapes below ROOT the database (below)", o.queries);
+  p.count ("--views", "N", "esf-views: views rendered per model, 12 (icosahedron) or 42 (subdivided once), 162, ...", o.views, 12, 100000,
+           [] (long long n) {
+             std::vector<Eigen::Vector3d> directions;
+             return pcl_flowseg::viewSphereDirections (static_cast<std::size_t> (n), directions);
+           });
   flowseg_app::addSegmentationOptions (p, o.params);
   flowseg_app::addViewpointOptions (p, o.params.interior.viewpoint, o.signature.input.use_sensor_origin);
   flowseg_app::addSignatureOptions (p, o.signature);
@@ -79,6 +96,19 @@ makeParser (Options& o)
   p.flag ("-q, --quiet", "no progress on stderr", o.quiet);
   p.epilogue ("The segmentation options apply to every shape; with --use-sensor-origin each file has its own\n"
               "VIEWPOINT (a collection of single-view scans).\n\n"
+              "Single-view recognition (--queries SCANS): each file below SCANS is a view of the model below ROOT\n"
+              "at the same relative path without extension (chair/3.pcd shows chair/3.off); meshes below ROOT are\n"
+              "sampled with 10000 points unless --mesh-points says otherwise. The models are segmented without a\n"
+              "viewpoint; --use-sensor-origin gives each scan its own. Category (the query's own model left out of\n"
+              "its ranking): NN, the best match has the query's class; FT, the share of the class's other models in\n"
+              "the first |class|-1. Instance (own model kept): the best match is the own model.\n"
+              "Methods (default " + std::string (kRecognitionMethods) + "): any signature method (the scan's\n"
+              "signature against the models'), esf (the scan's ESF against the ESF of each model's sample),\n"
+              "esf-views (against the ESF of views of each mesh rendered by the single-view protocol's camera from\n"
+              "--views directions; the nearest view counts; skipped when a model is a point sample).\n"
+              "ms/query: CPU time of describing a query and comparing it with every model (each query on one\n"
+              "thread); ms/model: of describing a model. Writes OUTDIR/single_view.tsv (per method and class, and\n"
+              "class all) and prints the table.\n\n"
               "Exit status: 0 success, 1 unreadable input or output, 2 bad options.");
   return p;
 }
@@ -259,6 +289,71 @@ evaluate (const OptionParser& p, const std::string& root, const Options& o, cons
   return flowseg_app::kExitSuccess;
 }
 
+/** Creates the folder \a dir (its parent must exist); false when it is not a folder then. */
+bool
+makeFolder (const std::string& dir)
+{
+  mkdir (dir.c_str (), 0755);
+  struct stat dir_stat;
+  return stat (dir.c_str (), &dir_stat) == 0 && S_ISDIR (dir_stat.st_mode);
+}
+
+/** Whether \a name (--option) is among the arguments, alone or with =VALUE. */
+bool
+given (int argc, char** argv, const char* name)
+{
+  const std::size_t n = std::strlen (name);
+  for (int i = 1; i < argc; ++i)
+    if (std::strncmp (argv[i], name, n) == 0 && (argv[i][n] == '\0' || argv[i][n] == '='))
+      return true;
+  return false;
+}
+
+/** Single-view recognition: the scans below --queries against the shapes below \a root. */
+int
+recogniseSingleViews (const OptionParser& p, const std::string& root, Options o, bool mesh_points_given, bool methods_given)
+{
+  std::vector<pcl_flowseg::RecognitionMethod> methods;
+  if (const pcl_flowseg::Status s = pcl_flowseg::parseRecognitionMethods (methods_given ? o.methods : kRecognitionMethods, methods); !s)
+    return p.usageError ("--methods: " + s.message);
+  pcl_flowseg::SingleViewRecognitionParameters params;
+  params.flow = o.params;
+  params.signature = o.signature;
+  if (!mesh_points_given)
+    params.signature.input.mesh_points = kRecognitionMeshPoints;
+  params.match = o.match;
+  params.views = o.views;
+  params.threads = o.threads;
+  pcl_flowseg::ShapeCollection models{root, {}}, queries{o.queries, {}};
+  for (auto* c : {&models, &queries})
+    if (const pcl_flowseg::Status s = pcl_flowseg::listShapeFiles (c->root, c->files); !s || c->files.empty ())
+      return p.failure (s ? "no shape files below " + c->root : s.message);
+  if (!makeFolder (o.output))
+    return p.failure ("cannot create the folder " + o.output);
+  std::unique_ptr<flowseg_app::ProgressLine> line;
+  std::string stage;
+  std::vector<pcl_flowseg::MethodRecognition> results;
+  const pcl_flowseg::Status s = pcl_flowseg::evaluateSingleViewRecognition (
+      models, queries, methods, params, results, [&] (const std::string& now, std::size_t done, std::size_t total) {
+        if (now != stage)
+        {
+          line.reset (); // ends the previous stage's line first
+          line = std::make_unique<flowseg_app::ProgressLine> (now, total, o.quiet);
+          stage = now;
+        }
+        line->update (done);
+      });
+  line.reset ();
+  if (!s)
+    return p.failure (s.message);
+  if (const pcl_flowseg::Status w = pcl_flowseg::writeRecognitionTsv (o.output + "/single_view.tsv", results); !w)
+    return p.failure (w.message);
+  std::printf ("single-view recognition: %zu queries below %s against %zu models below %s (meshes sampled with %zu points)\n%s",
+               queries.files.size (), o.queries.c_str (), models.files.size (), root.c_str (), params.signature.input.mesh_points,
+               pcl_flowseg::recognitionTable (results).c_str ());
+  return flowseg_app::kExitSuccess;
+}
+
 } // namespace
 
 int
@@ -272,19 +367,21 @@ main (int argc, char** argv)
     return status;
   if (roots.size () != 1 || o.output.empty ())
     return parser.usageError (roots.size () > 1 ? "more than one ROOT" : "need ROOT and --output DIR");
-  if (const pcl_flowseg::Status s = parseMethods (o); !s)
+  if (o.queries.empty () && given (argc, argv, "--views"))
+    return parser.usageError ("--views is for single-view recognition (--queries)");
+  if (const pcl_flowseg::Status s = o.queries.empty () ? parseMethods (o) : pcl_flowseg::Status::success (); !s)
     return parser.usageError (s.message);
   if (const int status = flowseg_app::checkViewpointOptions (parser, o.params, o.signature.input.use_sensor_origin);
       status != flowseg_app::kContinue)
     return status;
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
+  if (!o.queries.empty ())
+    return recogniseSingleViews (parser, roots[0], o, given (argc, argv, "--mesh-points"), given (argc, argv, "--methods"));
 
   Collection c;
   if (const pcl_flowseg::Status s = pcl_flowseg::listShapeFiles (roots[0], c.files); !s || c.files.empty ())
     return parser.failure (s ? "no shape files below " + roots[0] : s.message);
-  mkdir (o.output.c_str (), 0755);
-  struct stat dir_stat;
-  if (stat (o.output.c_str (), &dir_stat) != 0 || !S_ISDIR (dir_stat.st_mode))
+  if (!makeFolder (o.output))
     return parser.failure ("cannot create the folder " + o.output);
   describeShapes (roots[0], o, c);
   for (std::size_t i = 0; i < c.files.size (); ++i)

@@ -427,6 +427,65 @@ for app in "${scan_apps[@]}"; do
   "$build/apps/$app" --help | grep -q -- "--viewpoint X,Y,Z  sensor position of a single-view scan"; check "$app documents --viewpoint" $?
 done
 
+# --- single-view recognition: scans of a tiny collection against its meshes -----------------------
+box_off() { # a box of sides X Y Z
+  printf 'OFF\n8 12 0\n'
+  for k in 0 1 2 3 4 5 6 7; do
+    echo "$(( k & 1 )) $(( (k >> 1) & 1 )) $(( (k >> 2) & 1 ))"
+  done | awk -v x="$1" -v y="$2" -v z="$3" '{ print $1 * x, $2 * y, $3 * z }'
+  printf '3 0 2 1\n3 1 2 3\n3 4 5 6\n3 5 7 6\n3 0 1 4\n3 1 5 4\n3 2 6 3\n3 3 6 7\n3 0 4 2\n3 2 4 6\n3 1 3 5\n3 3 7 5\n'
+}
+ellipsoid_off() { # semi-axes A B C: 12 rings of 24 vertices
+  awk -v a="$1" -v b="$2" -v c="$3" 'BEGIN {
+    R = 12; S = 24; pi = atan2(0, -1); last = 1 + (R - 1) * S
+    printf "OFF\n%d %d 0\n0 0 %g\n", last + 1, 2 * S * (R - 1), c
+    for (i = 1; i < R; i++) for (j = 0; j < S; j++)
+      printf "%.6f %.6f %.6f\n", a * sin(pi * i / R) * cos(2 * pi * j / S), b * sin(pi * i / R) * sin(2 * pi * j / S), c * cos(pi * i / R)
+    printf "0 0 %g\n", -c
+    for (j = 0; j < S; j++) printf "3 0 %d %d\n", 1 + j, 1 + (j + 1) % S
+    for (i = 0; i < R - 2; i++) for (j = 0; j < S; j++) {
+      u = 1 + i * S + j; v = 1 + i * S + (j + 1) % S
+      printf "3 %d %d %d\n3 %d %d %d\n", u, u + S, v, v, u + S, v + S
+    }
+    for (j = 0; j < S; j++) printf "3 %d %d %d\n", last, 1 + (R - 2) * S + (j + 1) % S, 1 + (R - 2) * S + j
+  }'
+}
+sv="$work/single_view"
+mkdir -p "$sv/models/box" "$sv/models/ellipsoid"
+box_off 1 1 1 > "$sv/models/box/cube.off"
+box_off 4 1 0.5 > "$sv/models/box/bar.off"
+ellipsoid_off 1 1 1 > "$sv/models/ellipsoid/round.off"
+ellipsoid_off 3 1 0.6 > "$sv/models/ellipsoid/long.off"
+for m in box/cube box/bar ellipsoid/round ellipsoid/long; do
+  mkdir -p "$sv/scans/$(dirname $m)"
+  "$smp" "$sv/models/$m.off" --single-view-protocol --seed 3 -o "$sv/scans/$m.pcd" -q
+done
+expect "single-view recognition" 0 "single-view recognition: 4 queries .* 4 models" -- "$ev" "$sv/models" --queries "$sv/scans" -o "$sv/out" --use-sensor-origin --mesh-points 3000 -j 2
+grep -qE "^esf-views +[0-9.]+ +[0-9.]+ +1\.000 " "$work/out.txt"
+check "single-view recognition: each scan's nearest rendered view (esf-views) is of its own mesh" $?
+python3 - "$sv/out/single_view.tsv" <<'PY'
+import sys
+rows = [line.rstrip("\n").split("\t") for line in open(sys.argv[1])]
+assert rows[0] == ["method", "class", "queries", "category_nn", "first_tier", "instance_top1", "ms_per_query", "ms_per_model"], rows[0]
+body = rows[1:]
+assert sorted({r[0] for r in body}) == ["esf", "esf-views", "flowseg"], body
+for r in body:
+    assert r[1] in ("box", "ellipsoid", "all"), r
+    assert int(r[2]) == (4 if r[1] == "all" else 2), r
+    assert all(0.0 <= float(v) <= 1.0 for v in r[3:6]), r
+    assert float(r[6]) > 0 and float(r[7]) > 0, r
+assert [r[5] for r in body if r[0] == "esf-views" and r[1] == "all"] == ["1.0000"], body
+PY
+check "single-view recognition: single_view.tsv has its columns, a row per method and class, scores in [0, 1]" $?
+mkdir -p "$sv/point_models/box"
+cp "$sv/scans/box/cube.pcd" "$sv/scans/box/bar.pcd" "$sv/point_models/box/"
+expect "single-view recognition: esf-views skipped on point samples" 0 "esf-views +skipped: .*point sample" -- "$ev" "$sv/point_models" --queries "$sv/point_models" -o "$sv/out2" --methods esf,esf-views -q
+mkdir -p "$sv/scans/box2" && cp "$sv/scans/box/cube.pcd" "$sv/scans/box2/"
+expect "single-view recognition: a scan without a model" 1 "box2/cube.pcd has no model" -- "$ev" "$sv/models" --queries "$sv/scans" -o "$sv/out3" --methods esf
+expect "single-view recognition: --views of no view sphere" 2 "--views: .*12, 42" -- "$ev" "$sv/models" --queries "$sv/scans" -o "$sv/out3" --views 40
+expect "--views without --queries" 2 "--views is for single-view recognition" -- "$ev" "$sv/models" -o "$sv/out3" --views 12
+expect "single-view recognition: d2 is no method of it" 2 "--methods: 'd2' is none of" -- "$ev" "$sv/models" --queries "$sv/scans" -o "$sv/out3" --methods d2
+
 # --- every app takes -h and -q; every app that segments takes -j ----------------------------------
 all_apps=(flowseg_segment flowseg_sample flowseg_make_samples flowseg_signature flowseg_match flowseg_db flowseg_eval)
 [ -x "$build/apps/flowseg_view" ] && all_apps+=(flowseg_view)

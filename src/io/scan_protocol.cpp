@@ -31,7 +31,12 @@ protocolViewpoint (const TriangleMesh& mesh, double distance_in_diagonals, std::
   const double u = unitInterval (static_cast<std::uint32_t> (rng ()));
   const double v = unitInterval (static_cast<std::uint32_t> (rng ()));
   const double z = 1.0 - 2.0 * u, r = std::sqrt (std::max (0.0, 1.0 - z * z)), phi = 2.0 * M_PI * v;
-  const Eigen::Vector3d direction (r * std::cos (phi), r * std::sin (phi), z);
+  return protocolViewpointAlong (mesh, Eigen::Vector3d (r * std::cos (phi), r * std::sin (phi), z), distance_in_diagonals);
+}
+
+Eigen::Vector3d
+protocolViewpointAlong (const TriangleMesh& mesh, const Eigen::Vector3d& direction, double distance_in_diagonals)
+{
   Eigen::Vector3d lo = Eigen::Vector3d::Zero (), hi = lo;
   if (!mesh.vertices.empty ())
   {
@@ -45,17 +50,32 @@ protocolViewpoint (const TriangleMesh& mesh, double distance_in_diagonals, std::
   return 0.5 * (lo + hi) + distance_in_diagonals * mesh.diagonal () * direction;
 }
 
+namespace {
+/** The protocol's camera at \a viewpoint. */
 RangeScanOptions
-singleViewProtocolScan (const TriangleMesh& mesh, double depth_noise, std::uint32_t seed)
+protocolCamera (const Eigen::Vector3d& viewpoint, double depth_noise, std::uint32_t seed)
 {
   RangeScanOptions o;
-  o.viewpoint = protocolViewpoint (mesh, kProtocolDistanceDiagonals, seed);
+  o.viewpoint = viewpoint;
   o.image_pixels = kProtocolImagePixels;
   o.field_of_view = kProtocolFieldOfView;
   o.depth_noise = depth_noise;
   o.noise_model = DepthNoiseModel::kConstant;
   o.seed = seed;
   return o;
+}
+} // namespace
+
+RangeScanOptions
+singleViewProtocolScan (const TriangleMesh& mesh, double depth_noise, std::uint32_t seed)
+{
+  return protocolCamera (protocolViewpoint (mesh, kProtocolDistanceDiagonals, seed), depth_noise, seed);
+}
+
+RangeScanOptions
+singleViewProtocolScanAlong (const TriangleMesh& mesh, const Eigen::Vector3d& direction, double depth_noise, std::uint32_t seed)
+{
+  return protocolCamera (protocolViewpointAlong (mesh, direction, kProtocolDistanceDiagonals), depth_noise, seed);
 }
 
 } // namespace pcl_flowseg

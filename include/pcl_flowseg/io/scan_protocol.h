@@ -24,6 +24,11 @@ namespace pcl_flowseg {
 Eigen::Vector3d
 protocolViewpoint (const TriangleMesh& mesh, double distance_in_diagonals = 2.0, std::uint32_t seed = 1);
 
+/** \brief The sensor position \a distance_in_diagonals bounding-box diagonals from the bounding-box
+  * centre of \a mesh along the unit vector \a direction (protocolViewpoint's, for a given direction). */
+Eigen::Vector3d
+protocolViewpointAlong (const TriangleMesh& mesh, const Eigen::Vector3d& direction, double distance_in_diagonals = 2.0);
+
 /** \brief The scan options of the single-view protocol: a pinhole range camera of 240 x 240
   * pixels and a 50-degree field of view at protocolViewpoint (mesh, 2, seed), looking at the
   * bounding-box centre, every pixel's ray returning its first hit; Gaussian depth noise of the
@@ -31,5 +36,12 @@ protocolViewpoint (const TriangleMesh& mesh, double distance_in_diagonals = 2.0,
   * direction and the noise: the same seed with another noise gives the same rays and hits. */
 RangeScanOptions
 singleViewProtocolScan (const TriangleMesh& mesh, double depth_noise = 0.0, std::uint32_t seed = 1);
+
+/** \brief singleViewProtocolScan's camera looking from the unit vector \a direction instead of a
+  * random one (protocolViewpointAlong (mesh, direction, 2)): views of a mesh taken as the protocol
+  * takes its scans. \a seed draws only the noise. */
+RangeScanOptions
+singleViewProtocolScanAlong (const TriangleMesh& mesh, const Eigen::Vector3d& direction, double depth_noise = 0.0,
+                             std::uint32_t seed = 1);
 
 } // namespace pcl_flowseg
