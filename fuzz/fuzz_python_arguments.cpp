@@ -15,7 +15,9 @@ using namespace pcl_flowseg_python;
 const char* const kNames[] = {"dimension", "planar_tolerance", "rho", "sampling_tolerance", "stump_ratio", "compact_rho",
                               "compact_size", "min_part_share", "single_view_min_part_share", "separate", "denoising",
                               "viewpoint", "features", "threads", "memory_limit",
-                              "significance", "mesh_points", "seed", "threshold", "allow_mirror", "alignment_points"};
+                              "significance", "mesh_points", "seed", "threshold", "allow_mirror", "alignment_points",
+                              "separate_interior", "outliers", "smoothing", "smoothing_passes", "manifold_repair",
+                              "hidden_side", "use_sensor_origin", "method", "weights_3d", "weights_2d"};
 
 ArgumentValue
 fuzzValue (FuzzedDataProvider& in)
