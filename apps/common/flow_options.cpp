@@ -8,8 +8,6 @@
 #include <pcl_flowseg/signature/match_parameter_table.h>
 
 #include <iostream>
-#include <limits>
-#include <memory>
 #include <stdexcept>
 
 namespace flowseg_app {

@@ -10,9 +10,7 @@
 
 #include <cmath>
 #include <cstring>
-#include <functional>
 #include <limits>
-#include <map>
 #include <optional>
 #include <set>
 
