@@ -28,6 +28,21 @@ matchMethodName (MatchMethod method)
   return "unknown";
 }
 
+const std::vector<std::pair<std::string, double DescriptionWeights::*>>&
+descriptionWeightFields ()
+{
+  static const std::vector<std::pair<std::string, double DescriptionWeights::*>> fields = {
+      {"parts", &DescriptionWeights::parts},
+      {"thickness", &DescriptionWeights::thickness},
+      {"inner_distance", &DescriptionWeights::inner_distance},
+      {"solid_distance", &DescriptionWeights::solid_distance},
+      {"inner_profile", &DescriptionWeights::inner_profile},
+      {"thickness_profile", &DescriptionWeights::thickness_profile},
+      {"contour", &DescriptionWeights::contour},
+      {"inner_context", &DescriptionWeights::inner_context}};
+  return fields;
+}
+
 DescriptionWeights
 defaultDescriptionWeights (int dimension)
 {

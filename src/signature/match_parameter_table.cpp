@@ -11,20 +11,10 @@ namespace {
 
 using MP = MatchParameters;
 
-/** The weights by name, in the order of DescriptionWeights' fields. */
 const std::vector<std::pair<std::string, double DescriptionWeights::*>>&
 weightFields ()
 {
-  static const std::vector<std::pair<std::string, double DescriptionWeights::*>> fields = {
-      {"parts", &DescriptionWeights::parts},
-      {"thickness", &DescriptionWeights::thickness},
-      {"inner_distance", &DescriptionWeights::inner_distance},
-      {"solid_distance", &DescriptionWeights::solid_distance},
-      {"inner_profile", &DescriptionWeights::inner_profile},
-      {"thickness_profile", &DescriptionWeights::thickness_profile},
-      {"contour", &DescriptionWeights::contour},
-      {"inner_context", &DescriptionWeights::inner_context}};
-  return fields;
+  return descriptionWeightFields ();
 }
 
 /** A row of a set of description weights, written NAME=WEIGHT,... (names left out keep their weight). */

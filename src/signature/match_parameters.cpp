@@ -16,27 +16,14 @@ namespace pcl_flowseg {
 
 namespace {
 
-/** Each weight of \a w with its name in messages. */
-std::array<std::pair<const char*, double>, 8>
-namedWeights (const DescriptionWeights& w)
-{
-  return {{{"parts", w.parts},
-           {"thickness", w.thickness},
-           {"inner_distance", w.inner_distance},
-           {"solid_distance", w.solid_distance},
-           {"inner_profile", w.inner_profile},
-           {"thickness_profile", w.thickness_profile},
-           {"contour", w.contour},
-           {"inner_context", w.inner_context}}};
-}
-
 /** Why the weights \a w (called \a set in messages) cannot be used, or success. */
 Status
 checkWeights (const DescriptionWeights& w, const char* set, bool combined)
 {
   bool any = false;
-  for (const auto& [name, value] : namedWeights (w))
+  for (const auto& [name, field] : descriptionWeightFields ())
   {
+    const double value = w.*field;
     if (!std::isfinite (value) || value < 0.0)
       return Status::error (std::string ("the match weight ") + set + "." + name + " must be a finite number >= 0, got " +
                             std::to_string (value));

@@ -8,6 +8,8 @@
 #include <pcl_flowseg/common/status.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace pcl_flowseg {
 
@@ -73,6 +75,11 @@ struct DescriptionWeights
   double contour = 0.0;           ///< MatchMethod::Contour (2D shapes only: 3D shapes have no contour)
   double inner_context = 0.0;     ///< MatchMethod::InnerContext
 };
+
+/** \brief Each weight of DescriptionWeights with its name in options, keywords and messages, in
+  * the order of the fields. */
+const std::vector<std::pair<std::string, double DescriptionWeights::*>>&
+descriptionWeightFields ();
 
 /** \brief The default weights of MatchMethod::Combined for shapes of \a dimension (2, or 3 for any
   * other value), chosen on labelled collections of such shapes (docs/method.md). */
