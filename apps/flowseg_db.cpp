@@ -26,6 +26,7 @@ struct Options
 {
   std::size_t k = pcl_flowseg::kDefaultQueryResults;
   std::size_t candidates = pcl_flowseg::kDefaultCandidates;
+  std::size_t view_candidates = pcl_flowseg::kDefaultViewCandidates;
   std::string label;
   pcl_flowseg::FlowParameters params;
   flowseg_app::SignatureOptions signature;
@@ -48,6 +49,8 @@ makeParser (Options& o)
   p.count ("-k", "N", "query: how many results; 0 = all", o.k, 0, 1000000000);
   p.count ("--candidates", "N", "query: compare in full the N stored shapes whose summaries are\nnearest; 0 = every stored shape; the rest are listed after them\nby summary distance, similarity \"-\"",
            o.candidates, 0, 1000000000);
+  p.count ("--view-candidates", "N", "query of a single-view scan (--use-sensor-origin, --viewpoint):\nalign the scan with the N stored shapes whose views' histograms\nare nearest (at most --candidates)",
+           o.view_candidates, 1, 1000000000);
   p.text ("--label", "L", "add: class of the added shapes (default: their folder name)", o.label);
   flowseg_app::addSegmentationOptions (p, o.params);
   flowseg_app::addViewpointOptions (p, o.params.interior.viewpoint, o.signature.input.use_sensor_origin);
@@ -198,11 +201,13 @@ query (const OptionParser& p, const std::vector<std::string>& args, const Option
   pcl::SignatureMatcher matcher;
   matcher.setParameters (o.match);
   db.setCandidates (o.candidates);
+  db.setViewCandidates (o.view_candidates);
   db.setQueryThreads (o.threads);
   const auto t0 = std::chrono::steady_clock::now ();
   const auto hits = db.query (s, o.k, matcher);
   const double ms = std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
   const bool paper = o.match.method == pcl_flowseg::MatchMethod::Paper;
+  const bool single_view = s.views.single_view && !paper;
   std::printf ("rank\tsimilarity\t%s\tclass\tshape\n", paper ? "score" : "distance");
   for (std::size_t r = 0; r < hits.size (); ++r)
   {
@@ -213,10 +218,13 @@ query (const OptionParser& p, const std::vector<std::string>& args, const Option
     else
       std::printf ("%zu\t-\t-\t%s\t%s\n", r + 1, h.label.c_str (), h.name.c_str ());
   }
+  std::size_t compared = o.candidates == 0 ? db.size () : std::min (o.candidates, db.size ());
+  if (single_view && o.candidates != 0)
+    compared = std::min (compared, o.view_candidates);
   if (!o.quiet)
-    std::fprintf (stderr, "query (method %s) against %zu stored signatures (%s compared in full): %.2f ms\n",
-                  pcl_flowseg::matchMethodName (o.match.method), db.size (),
-                  o.candidates ? std::to_string (std::min (o.candidates, db.size ())).c_str () : "all", ms);
+    std::fprintf (stderr, "query (method %s%s) against %zu stored signatures (at most %zu compared in full): %.2f ms\n",
+                  pcl_flowseg::matchMethodName (o.match.method), single_view ? ", a single view aligned with their views" : "",
+                  db.size (), compared, ms);
   return flowseg_app::kExitSuccess;
 }
 

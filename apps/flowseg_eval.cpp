@@ -13,7 +13,7 @@
 #include <pcl_flowseg/evaluation/retrieval_report.h>
 #include <pcl_flowseg/evaluation/retrieval_scores.h>
 #include <pcl_flowseg/evaluation/shape_distributions.h>
-#include <pcl_flowseg/evaluation/view_sphere.h>
+#include <pcl_flowseg/signature/view_sphere.h>
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/signature/signature.h>

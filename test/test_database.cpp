@@ -79,7 +79,15 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
     std::ofstream (p) << text;
     return p;
   };
-  const std::string head = "pcl_flowseg signature database 6\nshapes 1\n";
+  const std::string head = "pcl_flowseg signature database 7\nshapes 1\n";
+  const std::string no_views = "views 0 0\no 0\n"; // a shape's views line and its empty shape points
+  const auto view_line = [] (const std::string& direction, const std::string& scale) { // a view: direction, centre, scale, histogram
+    std::string line = "v " + direction + " 0 0 0 " + scale;
+    for (std::size_t k = 0; k < kViewHistogramBins; ++k)
+      line += " 0";
+    return line + "\n";
+  };
+  const std::string two_points = "u 2 0 0 0 0 0 1 1 0 0 0 0 1\n"; // two view points with their normals
   const auto bins = [] (const std::string& tag) { // a distribution line: all in the first bin
     std::string line = tag + " 1";
     for (std::size_t k = 1; k < kDistributionBins; ++k)
@@ -105,18 +113,19 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
   struct Case { std::string text, expected; };
   const std::vector<Case> cases = {
       {"hello world\n", "not a pcl_flowseg signature database"},
-      {"pcl_flowseg signature database 7\nshapes 0\n", "version"},
-      {"pcl_flowseg signature database 6\nshapes x\n", ":2:"},
+      {"pcl_flowseg signature database 8\nshapes 0\n", "version"},
+      {"pcl_flowseg signature database 7\nshapes x\n", ":2:"},
       // Version 1 (no descriptions) is refused with what to do, never misread.
       {"pcl_flowseg signature database 1\nshapes 1\nshape a 3 1 1 0.02 1 name\np 0 0 0 1\n", ":1: a version 1 database"},
       {"pcl_flowseg signature database 2\nshapes 0\n", ":1: a version 2 database (signatures without inner-distance and thickness profiles"},
       {"pcl_flowseg signature database 3\nshapes 0\n", ":1: a version 3 database (signatures without 2D contours"},
       {"pcl_flowseg signature database 4\nshapes 0\n", ":1: a version 4 database (signatures without inner-distance contexts"},
       {"pcl_flowseg signature database 5\nshapes 0\n", ":1: a version 5 database (signatures without the parts' remoteness"},
+      {"pcl_flowseg signature database 6\nshapes 0\n", ":1: a version 6 database (signatures without views for single-view scans"},
       // A count the file cannot hold is refused before anything is allocated (fuzzing: 44 million
       // shapes in a 49-byte file asked for 4 GB).
-      {"pcl_flowseg signature database 6\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
-      {"pcl_flowseg signature database 6\nshapes -1\n", ":2:"},
+      {"pcl_flowseg signature database 7\nshapes 44204242\n", ":2: 44204242 shapes cannot fit"},
+      {"pcl_flowseg signature database 7\nshapes -1\n", ":2:"},
       {head + "shape a 3 1 1 0.02 2 0 0 0 name\np 0 0 0 0.5\n", ":5:"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 nan 0.5\n", ":4:"},
       {head + "shape a 4 1 1 0.02 1 0 0 0 name\np 0 0 0 1\n", ":3:"},
@@ -125,30 +134,30 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 1 88888888888888888888888888888880.6\n", ":4: the weight"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 1e300 0 0 1\n", ":4: coordinates"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 -0.5\n", ":4: the weight"},
-      {head + "shape a 3 0 1 0.02 1 0 0 0 name\np 0 0 0 1\n", ":3: shape 'name': the unit"},
-      {head + "shape a 3 1 1 0.02 2 0 0 0 name\np 0 0 0 0.5\np 1 0 0 0.2\n", ":3: shape 'name': the weights sum"},
-      {head + "shape a 3 1 1 0.02 2 0 0 0 name\np 0 0 0 0.4\np 1 0 0 0.6\n", ":3: shape 'name': the points are not ordered"},
-      {head + "shape a 3 1 1 1.5 1 0 0 0 name\np 0 0 0 1\n", ":3: shape 'name': "},
+      {head + "shape a 3 0 1 0.02 1 0 0 0 name\np 0 0 0 1\n" + no_views, ":3: shape 'name': the unit"},
+      {head + "shape a 3 1 1 0.02 2 0 0 0 name\np 0 0 0 0.5\np 1 0 0 0.2\n" + no_views, ":3: shape 'name': the weights sum"},
+      {head + "shape a 3 1 1 0.02 2 0 0 0 name\np 0 0 0 0.4\np 1 0 0 0.6\n" + no_views, ":3: shape 'name': the points are not ordered"},
+      {head + "shape a 3 1 1 1.5 1 0 0 0 name\np 0 0 0 1\n" + no_views, ":3: shape 'name': "},
       // Descriptions: every line and number checked.
       {head + "shape a 3 1 1 0.02 1 17 0 0 name\np 0 0 0 1\n", ":3: expected 'shape"},
       {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5\n", ":5: expected 'q"},
       {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\nt 1 0 0\n", ":6: expected 't' and 32 numbers"},
-      {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 0.5 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles + thickness_profile,
+      {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 0.5 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles + thickness_profile + no_views,
        ":3: shape 'name': the part weights sum"},
-      {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles + thickness_profile,
+      {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles + thickness_profile + no_views,
        ":3: shape 'name': part 1 has a thickness"},
       // Version 2 descriptions have no inner-distance profiles: refused at their first missing row.
       {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s"),
        ":9: expected 'r' and 32 numbers"},
       {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") +
            profiles.substr (0, profiles.size () / kProfileRows * (kProfileRows - 1)) + "r 0.5 0.4" + bins ("").substr (4) +
-           thickness_profile,
+           thickness_profile + no_views,
        ":3: shape 'name': the inner-distance profile distribution sums to 0.9"},
       {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles +
            "h -1 -1\n",
        ":25: expected 'h' and 16 numbers"},
       {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles +
-           "h 7" + thickness_profile.substr (4),
+           "h 7" + thickness_profile.substr (4) + no_views,
        ":3: shape 'name': the thickness profile has an entry outside"},
       {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + "s 0.5 0.5 0.5\n",
        ":8: expected 's'"},
@@ -158,19 +167,35 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
            thickness_profile + "c 1 0 0\n",
        ":26: expected 'c' and 60 numbers"},
       {head + "shape a 2 1 1 0.02 1 1 1 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + bins ("t") + bins ("i") + bins ("s") + profiles +
-           thickness_profile + contour_row,
+           thickness_profile + contour_row + no_views,
        ":3: shape 'name': the contour has 1 histograms, not 0 or 64"},
       // Inner contexts: a count above kDistanceSources, a short line, none with parts, a histogram
       // that does not sum to 1, a thickness outside the range.
       {head + "shape a 3 1 1 0.02 1 1 0 65 name\np 0 0 0 1\n", ":3: expected 'shape"},
       {head + "shape a 3 1 1 0.02 1 1 0 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + description + "x -1 1 0\n",
        ":26: expected 'x' and 17 numbers"},
-      {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + description,
+      {head + "shape a 3 1 1 0.02 1 1 0 0 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + description + no_views,
        ":3: shape 'name': the description has 0 inner contexts, not 1 to 64"},
-      {head + "shape a 3 1 1 0.02 1 1 0 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + description + "x -1 0.5" + context_row.substr (6),
+      {head + "shape a 3 1 1 0.02 1 1 0 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + description + "x -1 0.5" + context_row.substr (6) + no_views,
        ":3: shape 'name': an inner-context histogram sums to 0.5"},
-      {head + "shape a 3 1 1 0.02 1 1 0 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + description + "x 3" + context_row.substr (4),
+      {head + "shape a 3 1 1 0.02 1 1 0 1 name\np 0 0 0 1\nq 1 0.5 0.5 0.5 0.5 0\n" + description + "x 3" + context_row.substr (4) + no_views,
        ":3: shape 'name': an inner context's thickness is outside the thickness range"},
+      // Views: the line, each view's two lines, and the values checked.
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\n", ":5: expected 'views N SINGLE'"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 2\n", ":5: expected 'views N SINGLE'"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\nv 0 0 1 0 0 0 1 0.5\n", ":6: expected 'v DX DY DZ"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\n" + view_line ("0 0 1", "1") + "u 999\n",
+       ":7: expected 'u N' (N at most 128)"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\n" + view_line ("0 0 1", "1") + "u 2 0 0 0 0 0 1 1\n",
+       ":7: expected 'u N' and 2 points of 6 numbers"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\n" + view_line ("0 0 2", "1") + two_points + "o 0\n",
+       ":3: shape 'name': a view direction is not a unit vector"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\n" + view_line ("0 0 1", "-1") + two_points + "o 0\n",
+       ":3: shape 'name': a view's centre is not finite or its scale not > 0"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 2 1\n" + view_line ("0 0 1", "1") + two_points +
+           view_line ("0 0 1", "1") + two_points + "o 0\n",
+       ":3: shape 'name': a single-view set needs exactly one view, it has 2"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 0 0\no 1 0 0 0 0 0 2\n", ":3: shape 'name': a normal is not a unit vector"},
       {"", "not a pcl_flowseg"},
   };
   for (std::size_t k = 0; k < cases.size (); ++k)

@@ -7,7 +7,7 @@
 #include <pcl_flowseg/evaluation/recognition_method.h>
 #include <pcl_flowseg/evaluation/recognition_scores.h>
 #include <pcl_flowseg/evaluation/rendered_views.h>
-#include <pcl_flowseg/evaluation/view_sphere.h>
+#include <pcl_flowseg/signature/view_sphere.h>
 #include <pcl_flowseg/io/scan_protocol.h>
 
 #include <gtest/gtest.h>

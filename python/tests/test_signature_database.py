@@ -206,7 +206,7 @@ def test_bad_input_raises(tmp_path):
     with pytest.raises(OSError, match="cannot open"):
         fs.Database.open(str(tmp_path / "missing.db"))
     damaged = tmp_path / "damaged.db"
-    damaged.write_text("pcl_flowseg signature database 6\nshapes 1\nshape a 3 1 1 0.02 1 0 0 0 one\np 0 0 1 8e300\n")
+    damaged.write_text("pcl_flowseg signature database 7\nshapes 1\nshape a 3 1 1 0.02 1 0 0 0 one\np 0 0 1 8e300\n")
     with pytest.raises(OSError, match="damaged.db:4"):
         fs.Database.open(str(damaged))
     with pytest.raises(OSError):

@@ -9,16 +9,18 @@
 #include <pcl_flowseg/evaluation/query_models.h>
 #include <pcl_flowseg/evaluation/rendered_views.h>
 #include <pcl_flowseg/evaluation/shape_distributions.h>
-#include <pcl_flowseg/evaluation/view_sphere.h>
+#include <pcl_flowseg/signature/view_sphere.h>
 #include <pcl_flowseg/io/mesh_io.h>
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 #include <pcl_flowseg/signature/signature.h>
+#include <pcl_flowseg/signature/signature_database.h>
 #include <pcl_flowseg/signature/signature_matcher.h>
 
 #include <algorithm>
 #include <array>
 #include <ctime>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -61,6 +63,9 @@ struct ModelDatabase
   std::vector<std::vector<std::vector<double>>> views;
   std::vector<std::array<double, 3>> ms;   ///< per model, by DescriptionKind
   std::vector<char> renderable;             ///< a mesh (esf-views can render it)
+  /** The signatures as a database: single-view queries go through its candidates, as
+    * flowseg_db query does. */
+  SignatureDatabase signature_db;
   std::vector<Eigen::Vector3d> directions; ///< of the rendered views
 };
 
@@ -156,6 +161,10 @@ describeModels (const ShapeCollection& models, const SingleViewRecognitionParame
   for (const auto& e : db.errors)
     if (!e.empty ())
       return Status::error (e);
+  if (db.needed[kSignatureKind])
+    for (std::size_t i = 0; i < n; ++i)
+      db.signature_db.add (ShapeEntry{models.files[i], db.labels[i], db.signatures[i]});
+  db.signature_db.setQueryThreads (1); // queries run side by side
   return Status::success ();
 }
 
@@ -230,6 +239,17 @@ describeQuery (const std::string& path, const QueryPlan& plan, const SingleViewR
   return s;
 }
 
+/** The similarity of \a query to every model as the database ranks them: the candidates it
+  * compared by their similarity, the others after them, by their summary distance. */
+std::vector<double>
+databaseSimilarities (const Signature& query, const pcl::SignatureMatcher& matcher, const ModelDatabase& db)
+{
+  std::vector<double> row (db.labels.size (), -std::numeric_limits<double>::infinity ());
+  for (const QueryHit& hit : db.signature_db.query (query, 0, matcher))
+    row[hit.entry] = hit.compared ? hit.similarity : -1.0 - hit.summary_distance;
+  return row;
+}
+
 /** Describes query \a q and compares it with every model by every method that runs. */
 void
 compareQuery (const std::string& path, const QueryPlan& plan, const ModelDatabase& db,
@@ -252,6 +272,12 @@ compareQuery (const std::string& path, const QueryPlan& plan, const ModelDatabas
     std::vector<double>& row = out.similarity[m];
     row.resize (n);
     const RecognitionMethodKind kind = plan.methods[m].kind;
+    if (kind == RecognitionMethodKind::kSignature && d.signature.views.single_view)
+    {
+      row = databaseSimilarities (d.signature, plan.matchers[m], db);
+      out.ms[m] = d.ms[kindIndex (kind)] + msSince (t0);
+      continue;
+    }
     for (std::size_t j = 0; j < n; ++j)
       row[j] = kind == RecognitionMethodKind::kSignature ? plan.matchers[m].match (d.signature, db.signatures[j]).similarity
                : kind == RecognitionMethodKind::kEsf     ? histogramSimilarity (d.esf, db.esf[j])

@@ -42,13 +42,14 @@ readDatabaseHeader (std::istream& in, const std::string& path, std::size_t& coun
   int version = 0;
   if (!(std::istringstream (line.substr (std::strlen (kMagic))) >> version))
     return lineError (path, 1, "no database version");
-  if (version >= 1 && version <= 5)
+  if (version >= 1 && version <= 6)
     return lineError (path, 1, "a version " + std::to_string (version) + " database (signatures without " +
                                    (version == 1   ? "shape descriptions"
                                     : version == 2 ? "inner-distance and thickness profiles"
                                     : version == 3 ? "2D contours"
                                     : version == 4 ? "inner-distance contexts"
-                                                   : "the parts' remoteness") +
+                                    : version == 5 ? "the parts' remoteness"
+                                                   : "views for single-view scans") +
                                    ", written by an older pcl_flowseg): rebuild it with flowseg_db build");
   if (version != kDatabaseVersion)
     return lineError (path, 1, "unsupported database version (this build reads version " +
@@ -128,6 +129,140 @@ readInnerContext (LineReader& reader, InnerContext& context)
   return Status::success ();
 }
 
+/** A line of \a tag, a count N of at most \a most, and N points with their normals (6 numbers). */
+Status
+readTaggedPoints (LineReader& reader, const char* tag, std::size_t most, std::vector<Eigen::Vector3f>& points,
+                  std::vector<Eigen::Vector3f>& normals)
+{
+  std::string line, word;
+  std::size_t count = 0;
+  std::istringstream fields (reader.next (line) ? line : std::string ());
+  if (!(fields >> word >> count) || word != tag || count > most)
+    return reader.error (std::string ("expected '") + tag + " N' (N at most " + std::to_string (most) +
+                         ") and N points with normals");
+  points.resize (count);
+  normals.resize (count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (!(fields >> points[i].x () >> points[i].y () >> points[i].z () >> normals[i].x () >> normals[i].y () >> normals[i].z ()))
+      return reader.error (std::string ("expected '") + tag + " N' and " + std::to_string (count) + " points of 6 numbers");
+  }
+  return Status::success ();
+}
+
+/** A 'v' line (the view's direction, centre, scale and histogram) and a 'u' line (its points). */
+Status
+readView (LineReader& reader, ViewDescription& view)
+{
+  std::string line, word;
+  std::istringstream fields;
+  if (reader.next (line))
+    fields.str (line);
+  bool ok = static_cast<bool> (fields >> word >> view.direction.x () >> view.direction.y () >> view.direction.z () >>
+                               view.centre.x () >> view.centre.y () >> view.centre.z () >> view.scale) &&
+            word == "v";
+  for (float& v : view.histogram)
+    ok = ok && static_cast<bool> (fields >> v);
+  if (!ok)
+    return reader.error ("expected 'v DX DY DZ CX CY CZ SCALE' and " + std::to_string (kViewHistogramBins) + " numbers");
+  return readTaggedPoints (reader, "u", kViewPoints, view.points, view.normals);
+}
+
+/** The 'views N SINGLE' line and the N views that follow it. */
+Status
+readViewSet (LineReader& reader, ViewSet& set)
+{
+  std::string line, word;
+  std::size_t count = 0;
+  int single = 0;
+  if (!reader.next (line) || !(std::istringstream (line) >> word >> count >> single) || word != "views" ||
+      count > 10 * kDefaultViewCount || (single != 0 && single != 1))
+    return reader.error ("expected 'views N SINGLE' (SINGLE 0 or 1)");
+  set.single_view = single == 1;
+  set.views.resize (count);
+  for (ViewDescription& view : set.views)
+    if (const Status read = readView (reader, view); !read)
+      return read;
+  return readTaggedPoints (reader, "o", kShapePoints, set.shape_points, set.shape_normals);
+}
+
+/** The points with the stream's precision, their normals with 2 digits (they only weigh offsets;
+  * such a normal's length is within 1% of 1, which checkViewSet allows). */
+void
+writeTaggedPoints (std::ostream& out, const char* tag, const std::vector<Eigen::Vector3f>& points,
+                   const std::vector<Eigen::Vector3f>& normals)
+{
+  const std::streamsize precision = out.precision ();
+  out << tag << " " << points.size ();
+  for (std::size_t i = 0; i < points.size (); ++i)
+  {
+    out.precision (precision);
+    out << " " << points[i].x () << " " << points[i].y () << " " << points[i].z ();
+    out.precision (2);
+    out << " " << normals[i].x () << " " << normals[i].y () << " " << normals[i].z ();
+  }
+  out.precision (precision);
+  out << "\n";
+}
+
+/** The description's distribution, profile, contour and context lines (a shape with parts). */
+void
+writeDescribedLines (std::ostream& out, const ShapeDescription& d)
+{
+  std::vector<std::pair<const char*, const Distribution*>> tagged{{"t", &d.thickness}, {"i", &d.inner_distance}, {"s", &d.solid_distance}};
+  for (const Distribution& row : d.inner_profiles)
+    tagged.emplace_back ("r", &row);
+  for (const auto& [tag, bins] : tagged)
+  {
+    out << tag;
+    for (double v : *bins)
+      out << " " << v;
+    out << "\n";
+  }
+  out << "h";
+  for (double v : d.thickness_profile)
+    out << " " << v;
+  out << "\n";
+  // Nine digits read back every float exactly, in half the bytes of the doubles' seventeen.
+  const std::streamsize precision = out.precision (std::numeric_limits<float>::max_digits10);
+  for (const ContourHistogram& row : d.contour)
+  {
+    out << "c";
+    for (float v : row)
+      out << " " << v;
+    out << "\n";
+  }
+  for (const InnerContext& context : d.inner_contexts)
+  {
+    out << "x " << context.thickness;
+    for (float v : context.distances)
+      out << " " << v;
+    out << "\n";
+  }
+  out.precision (precision);
+}
+
+void
+writeViewSet (std::ostream& out, const ViewSet& set)
+{
+  // Four digits: a view's numbers are about 1 (RMS radii, shares), and matching needs no more.
+  const std::streamsize precision = out.precision (4);
+  out << "views " << set.views.size () << " " << (set.single_view ? 1 : 0) << "\n";
+  for (const ViewDescription& view : set.views)
+  {
+    out << "v " << view.direction.x () << " " << view.direction.y () << " " << view.direction.z () << " " << view.centre.x ()
+        << " " << view.centre.y () << " " << view.centre.z () << " " << view.scale;
+    for (float v : view.histogram)
+      out << " " << v;
+    out << "\n";
+    writeTaggedPoints (out, "u", view.points, view.normals);
+  }
+  // The shape's points are in input units: seven digits keep them to a millionth of its size.
+  out.precision (7);
+  writeTaggedPoints (out, "o", set.shape_points, set.shape_normals);
+  out.precision (precision);
+}
+
 } // namespace
 
 Status
@@ -177,6 +312,8 @@ readShape (LineReader& reader, std::size_t s, std::size_t count, ShapeEntry& e)
   for (InnerContext& context : sig.description.inner_contexts)
     if (const Status read = readInnerContext (reader, context); !read)
       return read;
+  if (const Status read = readViewSet (reader, sig.views); !read)
+    return read;
   if (const Status checked = checkSignature (sig); !checked)
     return lineError (reader.path, shape_line, "shape '" + e.name + "': " + checked.message);
   return Status::success ();
@@ -195,40 +332,11 @@ writeShape (std::ostream& out, const ShapeEntry& e)
   for (const auto& p : d.parts)
     out << "q " << p.weight << " " << p.thickness << " " << p.extent << " " << p.middle_ratio << " " << p.smallest_ratio << " "
         << p.remoteness << "\n";
-  if (d.parts.empty ())
-    return;
-  std::vector<std::pair<const char*, const Distribution*>> tagged{{"t", &d.thickness}, {"i", &d.inner_distance}, {"s", &d.solid_distance}};
-  for (const Distribution& row : d.inner_profiles)
-    tagged.emplace_back ("r", &row);
-  for (const auto& [tag, bins] : tagged)
-  {
-    out << tag;
-    for (double v : *bins)
-      out << " " << v;
-    out << "\n";
-  }
-  out << "h";
-  for (double v : d.thickness_profile)
-    out << " " << v;
-  out << "\n";
-  // Nine digits read back every float exactly, in half the bytes of the doubles' seventeen.
-  const std::streamsize precision = out.precision (std::numeric_limits<float>::max_digits10);
-  for (const ContourHistogram& row : d.contour)
-  {
-    out << "c";
-    for (float v : row)
-      out << " " << v;
-    out << "\n";
-  }
-  for (const InnerContext& context : d.inner_contexts)
-  {
-    out << "x " << context.thickness;
-    for (float v : context.distances)
-      out << " " << v;
-    out << "\n";
-  }
-  out.precision (precision);
+  if (!d.parts.empty ())
+    writeDescribedLines (out, d);
+  writeViewSet (out, s.views);
 }
+
 void
 writeDatabaseHeader (std::ostream& out, std::size_t count)
 {

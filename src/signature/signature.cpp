@@ -12,6 +12,21 @@
 
 namespace pcl_flowseg {
 
+namespace {
+
+/** The views of the segmented sample: its vertices without those guessed behind a single view,
+  * seen from the viewpoint the segmentation had, or rendered when it had none. */
+Status
+describeResultViews (const FlowResult& result, ViewSet& views)
+{
+  const std::size_t seen = result.vertices.size () - std::min (result.hidden_side_vertices, result.vertices.size ());
+  const std::vector<Eigen::Vector3d> points (result.vertices.begin (),
+                                            result.vertices.begin () + static_cast<std::ptrdiff_t> (seen));
+  return describeViewSet (points, result.dimension, result.parameters.interior.viewpoint, views);
+}
+
+} // namespace
+
 Status
 signatureFromSegmentation (const FlowResult& result, double significance, Signature& signature)
 {
@@ -51,7 +66,9 @@ signatureFromSegmentation (const FlowResult& result, double significance, Signat
     p.weight /= kept;
   std::sort (signature.points.begin (), signature.points.end (),
              [] (const WeightedPoint& a, const WeightedPoint& b) { return a.weight > b.weight; });
-  return describeShape (result, signature.description);
+  if (const Status described = describeShape (result, signature.description); !described)
+    return described;
+  return describeResultViews (result, signature.views);
 }
 
 Status
@@ -80,7 +97,9 @@ checkSignature (const Signature& signature)
   }
   if (!s.points.empty () && std::abs (total - 1.0) > 1e-9)
     return Status::error ("the weights sum to " + std::to_string (total) + ", not 1");
-  return checkShapeDescription (s.description);
+  if (const Status d = checkShapeDescription (s.description); !d)
+    return d;
+  return checkViewSet (s.views);
 }
 
 } // namespace pcl_flowseg

@@ -100,6 +100,7 @@ SignatureDatabase::SignatureDatabase (const SignatureDatabase& other)
   entries_ = other.entries_;
   by_name_ = other.by_name_;
   candidates_ = other.candidates_.load ();
+  view_candidates_ = other.view_candidates_.load ();
   query_threads_ = other.query_threads_.load ();
 }
 
@@ -126,6 +127,7 @@ SignatureDatabase::operator= (SignatureDatabase&& other) noexcept
   entries_ = std::move (other.entries_);
   by_name_ = std::move (other.by_name_);
   candidates_ = other.candidates_.load ();
+  view_candidates_ = other.view_candidates_.load ();
   query_threads_ = other.query_threads_.load ();
   other.entries_.clear ();
   other.by_name_.clear ();
@@ -372,6 +374,8 @@ SignatureDatabase::queryLocked (const Signature& signature, std::size_t k, const
     PCL_ERROR ("[pcl_flowseg::SignatureDatabase::query] %s\n", s.message.c_str ());
     return {}; // summaries with such weights would order nothing
   }
+  if (signature.views.single_view && params.method != MatchMethod::Paper)
+    return querySingleViewLocked (signature, k, matcher, candidates == 0 ? 0 : std::min (candidates, view_candidates_.load ()));
   const auto index = candidateIndex (params);
   const auto& tree = index->trees[signature.dimension == 2 ? 0 : 1];
   const std::size_t stored = tree.entry.size ();
@@ -401,18 +405,26 @@ SignatureDatabase::queryLocked (const Signature& signature, std::size_t k, const
     hit.similarity = hit.distance = hit.paper_score = std::numeric_limits<double>::quiet_NaN ();
     hits.push_back (hit);
   }
+  compareCandidates (signature, matcher, compared, hits);
+  if (k > 0 && hits.size () > k)
+    hits.resize (k);
+  return hits;
+}
+
+void
+SignatureDatabase::compareCandidates (const Signature& signature, const pcl::SignatureMatcher& matcher, std::size_t compared,
+                                      std::vector<QueryHit>& hits) const
+{
+  compared = std::min (compared, hits.size ());
   // The candidates compared in full, side by side: each writes only its own hit.
-  runParallelJobs (std::min (compared, hits.size ()), query_threads_, [&] (std::size_t r) {
+  runParallelJobs (compared, query_threads_, [&] (std::size_t r) {
     const auto m = matcher.match (signature, entries_[hits[r].entry].signature);
     hits[r].similarity = m.similarity;
     hits[r].distance = m.distance;
     hits[r].paper_score = m.paper_score;
   });
-  std::stable_sort (hits.begin (), hits.begin () + static_cast<std::ptrdiff_t> (std::min (compared, hits.size ())),
+  std::stable_sort (hits.begin (), hits.begin () + static_cast<std::ptrdiff_t> (compared),
                     [] (const QueryHit& a, const QueryHit& b) { return a.similarity > b.similarity; });
-  if (k > 0 && hits.size () > k)
-    hits.resize (k);
-  return hits;
 }
 
 } // namespace pcl_flowseg

@@ -6,6 +6,7 @@
 #include <pcl_flowseg/signature/signature_matcher.h>
 
 #include "description_distances.h"
+#include "view_distance.h"
 
 #include <flann/flann.hpp>
 #include <pcl/console/print.h>
@@ -195,6 +196,21 @@ scoreAlongAxis (const Signature& a, const Signature& b, std::size_t i, std::size
     scorer.score (r1 * m, a0 - r1 * b0, mirrored);
 }
 
+/** A single view against a complete shape's views (either order), or two single views. Infinite
+  * when either side has no view (a 2D shape, or a signature read from an older file). */
+double
+singleViewDistance (const pcl_flowseg::ViewSet& a, const pcl_flowseg::ViewSet& b)
+{
+  if (a.views.empty () || b.views.empty ())
+    return std::numeric_limits<double>::infinity ();
+  if (a.single_view && b.single_view)
+    return std::min (pcl_flowseg::internal::viewDistance (a.views[0], b.views[0]),
+                     pcl_flowseg::internal::viewDistance (b.views[0], a.views[0]));
+  const pcl_flowseg::ViewSet& scan = a.single_view ? a : b;
+  const pcl_flowseg::ViewSet& shape = a.single_view ? b : a;
+  return pcl_flowseg::internal::singleViewDistance (scan.views[0], shape);
+}
+
 } // namespace
 
 SignatureMatcher::Result
@@ -239,6 +255,12 @@ SignatureMatcher::match (const Signature& a, const Signature& b) const
   }
   if (params_.method == pcl_flowseg::MatchMethod::Paper)
     return matchPaper (a, b);
+  if (a.views.single_view || b.views.single_view) // a scan: aligned with the other's views
+  {
+    r.distance = singleViewDistance (a.views, b.views);
+    r.similarity = std::exp (-r.distance);
+    return r;
+  }
   r.distance = pcl_flowseg::descriptionDistance (pcl_flowseg::descriptionWeights (params_, a.dimension), a.description,
                                                  b.description); // symmetric
   r.similarity = std::exp (-r.distance);

@@ -13,8 +13,9 @@ namespace pcl_flowseg {
 /** \brief Version of the signature database file this build reads and writes (2: signatures with
   * shape descriptions; 3: the descriptions with inner-distance and thickness profiles; 4: and with
   * the 2D contour; 5: and with the inner-distance contexts; 6: parts placed by their remoteness
-  * (inner distance) instead of their straight distance from the centre). */
-constexpr int kDatabaseVersion = 6;
+  * (inner distance) instead of their straight distance from the centre); 7: and the views for
+  * single-view scans). */
+constexpr int kDatabaseVersion = 7;
 
 /** \brief One stored shape. */
 struct ShapeEntry

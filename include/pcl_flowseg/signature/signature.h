@@ -8,6 +8,7 @@
 #include <pcl_flowseg/common/flow_result.h>
 #include <pcl_flowseg/common/status.h>
 #include <pcl_flowseg/signature/shape_description.h>
+#include <pcl_flowseg/signature/view_description.h>
 
 #include <Eigen/Core>
 
@@ -39,6 +40,9 @@ struct Signature
   double significance = kDefaultSignificance;
   /** Parts and interior distributions, for every method but the paper's (describeShape). */
   ShapeDescription description;
+  /** How a depth camera sees the shape (3D only): rendered views of a complete shape, or the one
+    * view of a single-view scan; for recognising scans (SignatureMatcher, SignatureDatabase). */
+  ViewSet views;
 };
 
 /** \brief Largest coordinate a signature point may have, in the signature's unit: a feature's
@@ -53,7 +57,7 @@ constexpr double kLargestSignatureCoordinate = 1e9;
 Status
 checkSignature (const Signature& signature);
 
-/** \brief Builds the signature (points and description) from a segmentation with interior/exterior
+/** \brief Builds the signature (points, description and views) from a segmentation with interior/exterior
   * separation. Fails when the separation was not computed or found no interior. */
 Status
 signatureFromSegmentation (const FlowResult& result, double significance, Signature& signature);

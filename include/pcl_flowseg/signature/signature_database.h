@@ -53,9 +53,13 @@ constexpr std::size_t kDefaultQueryResults = 10;
   * docs/measurements.md ("Speed and memory"). */
 constexpr std::size_t kDefaultCandidates = 1000;
 
+/** \brief Default number of stored shapes a single-view query aligns with the scan
+  * (SignatureDatabase::setViewCandidates). */
+constexpr std::size_t kDefaultViewCandidates = 40;
+
 /** \brief Signatures of many shapes, kept in one text file (version kDatabaseVersion):
   *
-  *     pcl_flowseg signature database 6
+  *     pcl_flowseg signature database 7
   *     shapes N
   *     shape LABEL DIMENSION UNIT VOLUME SIGNIFICANCE POINTS PARTS CONTOUR CONTEXTS NAME...
   *     p X Y Z WEIGHT                                        POINTS lines: Signature::points
@@ -69,12 +73,18 @@ constexpr std::size_t kDefaultCandidates = 1000;
   *                                                           contour (kContourBins each)
   *     x THICKNESS B1 ... B16                                CONTEXTS lines: inner_contexts
   *                                                           (kContextBins each)
+  *     views N SINGLE                                        Signature::views (SINGLE 1: a scan's)
+  *     v DX DY DZ CX CY CZ SCALE B1 ... B80                  N pairs of lines: a view's direction,
+  *     u M X1 Y1 Z1 NX1 NY1 NZ1 ... NZM                      frame and histogram, its M points and
+  *                                                           their normals
+  *     o M X1 Y1 Z1 NX1 NY1 NZ1 ... NZM                      ViewSet::shape_points, shape_normals
   *
-  * A shape without a description (PARTS = CONTOUR = CONTEXTS = 0) has only its shape and p lines.
+  * A shape without a description (PARTS = CONTOUR = CONTEXTS = 0) has only its shape, p and views
+  * lines; a 2D shape has no views (N = 0).
   * Labels contain no white space ("-" for none); names may. Numbers are written with 17 significant
-  * digits, the c and x lines' (floats) with 9, so that every value reads back exactly. Loading
+  * digits, the c and x lines' (floats) with 9, so that every value reads back exactly; the views' with 4 (the o line's points with 7), their normals with 2. Loading
   * checks the header, the version, every count and number, and reports the line of the first
-  * problem. Files of versions 1 to 5 (written by older builds, without parts of today's
+  * problem. Files of versions 1 to 6 (written by older builds, without parts of today's
   * descriptions) are refused with a message that says to rebuild them.
   *
   * Threads: any number may query a database (and call the other const members) while others add,
@@ -136,6 +146,13 @@ public:
   void setCandidates (std::size_t count) { candidates_ = count; }
   std::size_t getCandidates () const { return candidates_; }
 
+  /** \brief How many stored shapes a single-view query (a scan's signature, ViewSet::single_view)
+    * aligns with the scan: the \a count whose nearest view's histogram lies nearest the scan's; the
+    * smaller of this and the candidates of the query is used (candidates 0: every stored shape).
+    * Default kDefaultViewCandidates. */
+  void setViewCandidates (std::size_t count) { view_candidates_ = count; }
+  std::size_t getViewCandidates () const { return view_candidates_; }
+
   /** \brief Threads one query compares its candidates on: 0 (default) = every core, 1 = the
     * calling thread only (for callers that run many queries side by side). The results are the
     * same for every count. */
@@ -145,7 +162,10 @@ public:
   /** \brief The \a k most similar stored shapes (all when k = 0) under \a matcher's method. The
     * compared candidates come first, by decreasing similarity; the other shapes follow by
     * increasing summary distance (compared = false). Shapes of another dimension are skipped.
-    * Parameters that checkMatchParameters refuses find nothing. */
+    * A single-view scan's signature (ViewSet::single_view) is, under every method but the paper's,
+    * aligned with the stored shapes' views (SignatureMatcher): its candidates are picked by the
+    * views' histograms (setViewCandidates), and shapes without views are skipped. Parameters that
+    * checkMatchParameters refuses find nothing. */
   std::vector<QueryHit> query (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher) const;
   /** \brief As above with \a candidates in place of getCandidates(): for callers that share one
     * database between threads asking with different candidate counts. */
@@ -161,6 +181,13 @@ private:
   std::vector<QueryHit> queryLocked (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
                                      std::size_t candidates) const;
 
+  /** queryLocked for a single-view scan: candidates by view histograms, compared by alignment. */
+  std::vector<QueryHit> querySingleViewLocked (const Signature& signature, std::size_t k,
+                                               const pcl::SignatureMatcher& matcher, std::size_t candidates) const;
+  /** Matches the first \a compared hits in full (side by side) and sorts them by similarity. */
+  void compareCandidates (const Signature& signature, const pcl::SignatureMatcher& matcher, std::size_t compared,
+                          std::vector<QueryHit>& hits) const;
+
   struct CandidateIndex;
   /** The candidate index for \a params (the summaries depend on the method and, for the
     * description methods, on their weights), built on its first query after a change. */
@@ -171,6 +198,7 @@ private:
   std::vector<ShapeEntry> entries_;
   std::unordered_map<std::string, std::size_t> by_name_;
   std::atomic<std::size_t> candidates_{kDefaultCandidates};
+  std::atomic<std::size_t> view_candidates_{kDefaultViewCandidates};
   std::atomic<unsigned> query_threads_{0};
   /** The candidate indexes built, by what their summaries depend on (summaryKey). */
   mutable std::map<std::vector<double>, std::shared_ptr<const CandidateIndex>> indexes_;

@@ -80,7 +80,11 @@ public:
   inline void setMethod (pcl_flowseg::MatchMethod method) { params_.method = method; }
   inline pcl_flowseg::MatchMethod getMethod () const { return params_.method; }
 
-  /** \brief Compares \a a and \a b; match (a, b) == match (b, a). Paper: empty signatures score 0
+  /** \brief Compares \a a and \a b; match (a, b) == match (b, a). When either is a single-view
+    * scan's (ViewSet::single_view), every method but the paper's aligns the scan with the other's
+    * views and whole surface (or with the other scan): distance is the mean distance between the
+    * aligned points, in RMS radii of the visible points, and infinite when the other has no views
+    * (a 2D shape). Paper: empty signatures score 0
     * against empty ones and minus the other's total weight otherwise. Parameters that
     * checkMatchParameters refuses match nothing: Result::status says why. */
   Result match (const pcl_flowseg::Signature& a, const pcl_flowseg::Signature& b) const;

@@ -1,8 +1,8 @@
 /*
- * pcl_flowseg evaluation - directions spread evenly over the sphere: an icosahedron, subdivided.
+ * pcl_flowseg - directions spread evenly over the sphere: an icosahedron, subdivided.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
-#include <pcl_flowseg/evaluation/view_sphere.h>
+#include <pcl_flowseg/signature/view_sphere.h>
 
 #include <array>
 #include <cmath>

@@ -1,5 +1,5 @@
 /*
- * pcl_flowseg evaluation - directions spread evenly over the sphere: an icosahedron, subdivided,
+ * pcl_flowseg - directions spread evenly over the sphere: an icosahedron, subdivided,
  * to render the views of a model from.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
