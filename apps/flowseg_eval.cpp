@@ -10,6 +10,7 @@
 
 #include <pcl_flowseg/common/parallel_jobs.h>
 #include <pcl_flowseg/evaluation/recognition_report.h>
+#include <pcl_flowseg/evaluation/single_view_figure.h>
 #include <pcl_flowseg/evaluation/retrieval_report.h>
 #include <pcl_flowseg/evaluation/retrieval_scores.h>
 #include <pcl_flowseg/evaluation/shape_distributions.h>
@@ -105,10 +106,13 @@ makeParser (Options& o)
               "Methods (default " + std::string (kRecognitionMethods) + "): any signature method (the scan's\n"
               "signature against the models'), esf (the scan's ESF against the ESF of each model's sample),\n"
               "esf-views (against the ESF of views of each mesh rendered by the single-view protocol's camera from\n"
-              "--views directions; the nearest view counts; skipped when a model is a point sample).\n"
+              "--views directions; the nearest view counts; skipped when a model is a point sample). With\n"
+              "--use-sensor-origin the module's methods query a signature database as flowseg_db query does: the\n"
+              "scan is aligned with the models' rendered views.\n"
               "ms/query: CPU time of describing a query and comparing it with every model (each query on one\n"
               "thread); ms/model: of describing a model. Writes OUTDIR/single_view.tsv (per method and class, and\n"
-              "class all) and prints the table.\n\n"
+              "class all), OUTDIR/top5_single_view_METHOD.png (the first scan of up to eight classes, coloured by\n"
+              "its features, and its five best models by the first module method) and prints the table.\n\n"
               "Exit status: 0 success, 1 unreadable input or output, 2 bad options.");
   return p;
 }
@@ -348,6 +352,14 @@ recogniseSingleViews (const OptionParser& p, const std::string& root, Options o,
     return p.failure (s.message);
   if (const pcl_flowseg::Status w = pcl_flowseg::writeRecognitionTsv (o.output + "/single_view.tsv", results); !w)
     return p.failure (w.message);
+  for (std::size_t m = 0; m < methods.size (); ++m)
+    if (methods[m].kind == pcl_flowseg::RecognitionMethodKind::kSignature && results[m].skipped.empty ())
+    {
+      const std::string figure = o.output + "/top5_single_view_" + results[m].name + ".png";
+      if (const pcl_flowseg::Status w = pcl_flowseg::writeSingleViewFigure (figure, models, queries, params, results[m]); !w)
+        return p.failure (w.message);
+      break; // the first of the module's methods
+    }
   std::printf ("single-view recognition: %zu queries below %s against %zu models below %s (meshes sampled with %zu points)\n%s",
                queries.files.size (), o.queries.c_str (), models.files.size (), root.c_str (), params.signature.input.mesh_points,
                pcl_flowseg::recognitionTable (results).c_str ());

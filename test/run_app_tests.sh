@@ -507,7 +507,12 @@ quiet_run() { # name, command...: exit 0 and nothing on stderr
 quiet_run flowseg_segment "$seg" "$work/scan.pcd" -o "$work/q" -q
 quiet_run flowseg_signature "$sig" "$work/scan.pcd" -q
 quiet_run flowseg_match "$mat" "$work/scan.pcd" "$work/scan.pcd" -q
-quiet_run flowseg_db "$db" query "$work/scans_own.db" "$work/scan.pcd" -q
+quiet_run flowseg_db "$db" query "$work/scans_own.db" "$work/scan.pcd" --use-sensor-origin -q
+expect "db query of a scan without its viewpoint warns" 0 "scan.pcd looks like a single view seen from its sensor origin \(0.5, 0, 12\): single-view matching needs that viewpoint" -- "$db" query "$work/scans_own.db" "$work/scan.pcd" -q
+expect "db query of a complete shape gives no single-view warning" 0 "" -- "$db" query "$work/scans_own.db" "$src/samples/snowman3d.pcd" -q
+! grep -q "single view" "$work/err.txt"; check "db query of a complete shape: no single-view warning" $?
+expect "db query from a viewpoint inside the object" 1 "the viewpoint lies inside the scanned points' bounding box" -- "$db" query "$work/scans_own.db" "$work/scan.pcd" --viewpoint 1,0.2,0.1
+expect "db query from a viewpoint that is not a number" 2 "viewpoint needs X,Y,Z \(three finite numbers\)" -- "$db" query "$work/scans_own.db" "$work/scan.pcd" --viewpoint nan,0,0
 quiet_run flowseg_eval "$ev" "$work/scans" -o "$work/scans_eval4" --methods parts -q
 quiet_run flowseg_sample "$smp" "$work/balls.off" -n 100 -o "$work/q.pcd" -q
 quiet_run flowseg_make_samples "$gen" -o "$work/q_samples" --points2d 100 --points3d 100 -q

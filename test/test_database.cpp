@@ -82,7 +82,7 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
   const std::string head = "pcl_flowseg signature database 7\nshapes 1\n";
   const std::string no_views = "views 0 0\no 0\n"; // a shape's views line and its empty shape points
   const auto view_line = [] (const std::string& direction, const std::string& scale) { // a view: direction, centre, scale, histogram
-    std::string line = "v " + direction + " 0 0 0 " + scale;
+    std::string line = "v " + direction + " 0 0 0 0 " + scale;
     for (std::size_t k = 0; k < kViewHistogramBins; ++k)
       line += " 0";
     return line + "\n";
@@ -183,7 +183,7 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
       // Views: the line, each view's two lines, and the values checked.
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\n", ":5: expected 'views N SINGLE'"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 2\n", ":5: expected 'views N SINGLE'"},
-      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\nv 0 0 1 0 0 0 1 0.5\n", ":6: expected 'v DX DY DZ"},
+      {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\nv 0 0 1 0 0 0 1 0.5\n", ":6: expected 'v DX DY DZ ROLL"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\n" + view_line ("0 0 1", "1") + "u 999\n",
        ":7: expected 'u N' (N at most 128)"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\n" + view_line ("0 0 1", "1") + "u 2 0 0 0 0 0 1 1\n",
@@ -191,7 +191,7 @@ TEST (Database, CorruptOrForeignFilesAreRejectedWithTheLine)
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\n" + view_line ("0 0 2", "1") + two_points + "o 0\n",
        ":3: shape 'name': a view direction is not a unit vector"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 1 0\n" + view_line ("0 0 1", "-1") + two_points + "o 0\n",
-       ":3: shape 'name': a view's centre is not finite or its scale not > 0"},
+       ":3: shape 'name': a view's centre or roll is not finite or its scale not > 0"},
       {head + "shape a 3 1 1 0.02 1 0 0 0 name\np 0 0 0 1\nviews 2 1\n" + view_line ("0 0 1", "1") + two_points +
            view_line ("0 0 1", "1") + two_points + "o 0\n",
        ":3: shape 'name': a single-view set needs exactly one view, it has 2"},

@@ -6,10 +6,12 @@
 
 #include <pcl_flowseg/evaluation/png_writer.h>
 #include <pcl_flowseg/io/atomic_file.h>
+#include <pcl_flowseg/io/segment_colours.h>
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <iomanip>
 #include <numeric>
 #include <ostream>
@@ -41,9 +43,11 @@ writeSimilarityCsv (const std::string& path, const std::vector<std::string>& nam
 }
 
 namespace {
-/** Draws \a points into the square cell at (x0, y0) of an RGB image \a width pixels wide. */
+/** Draws \a points into the square cell at (x0, y0) of an RGB image \a width pixels wide, dark
+  * grey, or each in its feature's colour when \a labels (one per point) are given. */
 void
-drawShape (std::vector<std::uint8_t>& img, int width, int x0, int y0, int cell, const std::vector<Eigen::Vector3d>& points)
+drawShape (std::vector<std::uint8_t>& img, int width, int x0, int y0, int cell, const std::vector<Eigen::Vector3d>& points,
+           const std::vector<std::uint32_t>* labels = nullptr)
 {
   if (points.empty ())
     return;
@@ -77,14 +81,18 @@ drawShape (std::vector<std::uint8_t>& img, int width, int x0, int y0, int cell, 
   if (!(span > 0))
     return;
   const double scale = (cell - 12) / span;
-  for (const auto& p : points)
+  for (std::size_t i = 0; i < points.size (); ++i)
   {
+    const Eigen::Vector3d& p = points[i];
     const int x = x0 + 6 + static_cast<int> (((p - mean).dot (u) - lo_u) * scale + 0.5 * (cell - 12 - (hi_u - lo_u) * scale));
     const int y = y0 + cell - 7 - static_cast<int> (((p - mean).dot (v) - lo_v) * scale + 0.5 * (cell - 12 - (hi_v - lo_v) * scale));
     if (x < x0 || y < y0 || x >= x0 + cell || y >= y0 + cell)
       continue;
+    const std::array<std::uint8_t, 3> colour =
+        labels && i < labels->size () ? segmentColour ((*labels)[i]) : std::array<std::uint8_t, 3>{{40, 40, 40}};
     for (int c = 0; c < 3; ++c)
-      img[3 * (static_cast<std::size_t> (y) * static_cast<std::size_t> (width) + static_cast<std::size_t> (x)) + static_cast<std::size_t> (c)] = 40;
+      img[3 * (static_cast<std::size_t> (y) * static_cast<std::size_t> (width) + static_cast<std::size_t> (x)) + static_cast<std::size_t> (c)] =
+          colour[static_cast<std::size_t> (c)];
   }
 }
 
@@ -132,6 +140,39 @@ writeTopMatchesPng (const std::string& path, const std::vector<std::vector<Eigen
         frame (img, width, (r + 1) * cell, y0, cell, 40, 170, 60);
       else
         frame (img, width, (r + 1) * cell, y0, cell, 220, 50, 40);
+    }
+  }
+  return writePng (path, width, height, 3, img);
+}
+
+Status
+writeSingleViewMatchesPng (const std::string& path, const std::vector<std::vector<Eigen::Vector3d>>& scans,
+                           const std::vector<std::vector<std::uint32_t>>& scan_labels, const std::vector<std::string>& scan_classes,
+                           const std::vector<std::vector<Eigen::Vector3d>>& models, const std::vector<std::string>& model_classes,
+                           const std::vector<std::vector<double>>& similarity, int k, int cell)
+{
+  if (scans.empty () || k < 1 || cell < 16 || scan_labels.size () != scans.size () || scan_classes.size () != scans.size () ||
+      similarity.size () != scans.size () || model_classes.size () != models.size ())
+    return Status::error ("cannot write " + path + ": nothing to draw");
+  const int width = (k + 1) * cell, height = static_cast<int> (scans.size ()) * cell;
+  std::vector<std::uint8_t> img (3 * static_cast<std::size_t> (width) * static_cast<std::size_t> (height), 255);
+  for (std::size_t row = 0; row < scans.size (); ++row)
+  {
+    const int y0 = static_cast<int> (row) * cell;
+    drawShape (img, width, 0, y0, cell, scans[row], &scan_labels[row]);
+    frame (img, width, 0, y0, cell, 40, 90, 220);
+    if (similarity[row].size () != models.size ())
+      return Status::error ("cannot write " + path + ": a similarity row does not match the models");
+    std::vector<std::size_t> order (models.size ());
+    std::iota (order.begin (), order.end (), 0);
+    std::stable_sort (order.begin (), order.end (),
+                      [&] (std::size_t a, std::size_t b) { return similarity[row][a] > similarity[row][b]; });
+    for (int r = 0; r < k && r < static_cast<int> (order.size ()); ++r)
+    {
+      const std::size_t j = order[static_cast<std::size_t> (r)];
+      drawShape (img, width, (r + 1) * cell, y0, cell, models[j]);
+      const bool same = model_classes[j] == scan_classes[row];
+      frame (img, width, (r + 1) * cell, y0, cell, same ? 40 : 220, same ? 170 : 50, same ? 60 : 40);
     }
   }
   return writePng (path, width, height, 3, img);

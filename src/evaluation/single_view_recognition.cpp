@@ -330,6 +330,7 @@ scoreMethod (std::size_t m, const QueryPlan& plan, const ModelDatabase& db, cons
     r.model_ms += ms[kind] / static_cast<double> (db.ms.size ());
   if (const Status s = scoreRecognition (similarity, model_of_query, db.labels, r.scores, r.per_class); !s)
     return s;
+  r.similarity = std::move (similarity);
   for (const auto& c : r.per_class)
     r.class_query_ms.push_back (class_ms[c.label].first / static_cast<double> (class_ms[c.label].second));
   return Status::success ();

@@ -159,12 +159,12 @@ readView (LineReader& reader, ViewDescription& view)
   if (reader.next (line))
     fields.str (line);
   bool ok = static_cast<bool> (fields >> word >> view.direction.x () >> view.direction.y () >> view.direction.z () >>
-                               view.centre.x () >> view.centre.y () >> view.centre.z () >> view.scale) &&
+                               view.roll >> view.centre.x () >> view.centre.y () >> view.centre.z () >> view.scale) &&
             word == "v";
   for (float& v : view.histogram)
     ok = ok && static_cast<bool> (fields >> v);
   if (!ok)
-    return reader.error ("expected 'v DX DY DZ CX CY CZ SCALE' and " + std::to_string (kViewHistogramBins) + " numbers");
+    return reader.error ("expected 'v DX DY DZ ROLL CX CY CZ SCALE' and " + std::to_string (kViewHistogramBins) + " numbers");
   return readTaggedPoints (reader, "u", kViewPoints, view.points, view.normals);
 }
 
@@ -250,7 +250,8 @@ writeViewSet (std::ostream& out, const ViewSet& set)
   out << "views " << set.views.size () << " " << (set.single_view ? 1 : 0) << "\n";
   for (const ViewDescription& view : set.views)
   {
-    out << "v " << view.direction.x () << " " << view.direction.y () << " " << view.direction.z () << " " << view.centre.x ()
+    out << "v " << view.direction.x () << " " << view.direction.y () << " " << view.direction.z () << " " << view.roll << " "
+        << view.centre.x ()
         << " " << view.centre.y () << " " << view.centre.z () << " " << view.scale;
     for (float v : view.histogram)
       out << " " << v;

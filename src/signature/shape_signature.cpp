@@ -7,6 +7,9 @@
 #include <pcl_flowseg/common/parallel_jobs.h>
 #include <pcl_flowseg/io/shape_input.h>
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
+#include <pcl_flowseg/signature/view_description.h>
+
+#include <pcl/console/print.h>
 
 namespace pcl_flowseg {
 
@@ -24,6 +27,12 @@ signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, c
   FlowParameters own = params;
   if (input.use_sensor_origin)
     own.interior.viewpoint = origin;
+  if (s.ok && !own.interior.viewpoint && origin && looksLikeSingleView (points, *origin))
+    PCL_WARN ("[pcl_flowseg] %s looks like a single view seen from its sensor origin (%g, %g, %g): single-view "
+              "matching needs that viewpoint (flowseg apps: --use-sensor-origin or --viewpoint; Python: "
+              "use_sensor_origin=True); without it the file is matched as a complete shape, which ranks single views "
+              "poorly\n",
+              path.c_str (), origin->x (), origin->y (), origin->z ());
   if (s.ok)
     s = runFlowSegmentation (points, own, result);
   if (s.ok)

@@ -24,8 +24,19 @@ constexpr double kHistogramDepth = 1.5;
 /** Largest pair distance the pair block covers, in RMS radii. */
 constexpr double kHistogramPairDistance = 4.0;
 
+/** The angle about z that turns x onto the widest spread of \a local across z. */
+double
+widestRoll (const std::vector<Eigen::Vector3d>& local)
+{
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero ();
+  for (const auto& p : local)
+    scatter += p.head<2> () * p.head<2> ().transpose ();
+  const Eigen::Vector2d widest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (scatter).eigenvectors ().col (1);
+  return std::atan2 (widest.y (), widest.x ());
+}
+
 /** \a points in the view frame of a camera at \a camera (see ViewDescription), whose origin,
-  * direction and scale it sets in \a view. */
+  * direction, roll and scale it sets in \a view. */
 std::vector<Eigen::Vector3d>
 toViewFrame (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& camera, ViewDescription& view)
 {
@@ -42,11 +53,14 @@ toViewFrame (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& 
     local.push_back (axes.transpose () * (p - centroid));
     squares += (p - centroid).squaredNorm ();
   }
+  const double roll = widestRoll (local);
+  const Eigen::Matrix3d unroll = Eigen::AngleAxisd (-roll, Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
   double radius = std::sqrt (squares / static_cast<double> (points.size ()));
   radius = radius > 0.0 ? radius : 1.0;
   for (auto& p : local)
-    p /= radius;
+    p = unroll * p / radius;
   view.direction = -axes.col (2).cast<float> ();
+  view.roll = static_cast<float> (roll);
   view.centre = centroid.cast<float> ();
   view.scale = static_cast<float> (radius);
   return local;
@@ -100,9 +114,13 @@ std::vector<Eigen::Vector3f>
 farthestPoints (const std::vector<Eigen::Vector3d>& local, std::size_t count)
 {
   std::vector<double> nearest (local.size (), std::numeric_limits<double>::infinity ());
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
+  for (const auto& p : local)
+    centroid += p;
+  centroid /= static_cast<double> (std::max<std::size_t> (1, local.size ()));
   std::size_t next = 0;
   for (std::size_t i = 1; i < local.size (); ++i)
-    if (local[i].squaredNorm () < local[next].squaredNorm ())
+    if ((local[i] - centroid).squaredNorm () < (local[next] - centroid).squaredNorm ())
       next = i;
   std::vector<Eigen::Vector3f> kept;
   const std::size_t wanted = std::min (count, local.size ());
@@ -179,6 +197,13 @@ viewFrameAxes (const Eigen::Vector3d& sight)
   return axes;
 }
 
+Eigen::Matrix3d
+viewAxes (const ViewDescription& view)
+{
+  return viewFrameAxes (-view.direction.cast<double> ().normalized ()) *
+         Eigen::AngleAxisd (view.roll, Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
+}
+
 Status
 describeScanView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& viewpoint, ViewDescription& view)
 {
@@ -222,8 +247,8 @@ checkViewSet (const ViewSet& set)
   {
     if (!v.direction.allFinite () || std::abs (v.direction.norm () - 1.0f) > 1e-3f)
       return Status::error ("a view direction is not a unit vector");
-    if (!v.centre.allFinite () || !std::isfinite (v.scale) || !(v.scale > 0.0f))
-      return Status::error ("a view's centre is not finite or its scale not > 0");
+    if (!v.centre.allFinite () || !std::isfinite (v.scale) || !(v.scale > 0.0f) || !(std::abs (v.roll) <= 4.0f))
+      return Status::error ("a view's centre or roll is not finite or its scale not > 0");
     if (v.points.size () > kViewPoints || v.points.size () < 2)
       return Status::error ("a view has " + std::to_string (v.points.size ()) + " points (2 to " +
                             std::to_string (kViewPoints) + ")");

@@ -21,7 +21,7 @@ constexpr int kRolls = 12;
 /** Points of the moving view the rolls are tried with (a farthest-point prefix: spread evenly). */
 constexpr Eigen::Index kRollPoints = 32;
 /** Iterations of each closest-point refinement. */
-constexpr int kRefinements = 8;
+constexpr int kRefinements = 5;
 /** Rolls kept per view, refined coarsely: kCoarseRefinements iterations with the first
   * kCoarsePoints of the scan. */
 constexpr std::size_t kRollsPerView = 2;
@@ -29,6 +29,7 @@ constexpr int kCoarseRefinements = 4;
 constexpr Eigen::Index kCoarsePoints = 64;
 /** Best coarse starts refined in full, on the view and then on the whole surface. */
 constexpr std::size_t kFinishedStarts = 2;
+
 
 using Points = Eigen::Matrix3Xd;
 
@@ -64,20 +65,23 @@ nearestColumns (const Points& from, const Points& to, std::vector<Eigen::Index>&
 {
   index.resize (static_cast<std::size_t> (from.cols ()));
   double sum = 0.0;
+  const double* candidates = to.data (); // x, y, z of each column in turn
   for (Eigen::Index i = 0; i < from.cols (); ++i)
   {
-    const Eigen::Vector3d p = from.col (i);
+    const double px = from (0, i), py = from (1, i), pz = from (2, i);
     double best = std::numeric_limits<double>::infinity ();
     Eigen::Index nearest = 0;
     for (Eigen::Index j = 0; j < to.cols (); ++j)
     {
-      const double d = (to.col (j) - p).squaredNorm ();
+      const double dx = candidates[3 * j] - px, dy = candidates[3 * j + 1] - py, dz = candidates[3 * j + 2] - pz;
+      const double d = dx * dx + dy * dy + dz * dz;
       if (d < best)
       {
         best = d;
         nearest = j;
       }
     }
+    const Eigen::Vector3d p (px, py, pz);
     index[static_cast<std::size_t> (i)] = nearest;
     if (normals)
     {
@@ -176,7 +180,7 @@ bestRolls (const Points& moving, const Points& fixed, std::size_t count)
 Surface
 inViewFrame (const ViewSet& shape, const ViewDescription& view)
 {
-  const Eigen::Matrix3d axes = viewFrameAxes (-view.direction.cast<double> ().normalized ());
+  const Eigen::Matrix3d axes = viewAxes (view);
   Surface s = asSurface (shape.shape_points, shape.shape_normals);
   s.points.colwise () -= view.centre.cast<double> ();
   s.points = axes.transpose () * s.points / static_cast<double> (view.scale);
@@ -184,15 +188,14 @@ inViewFrame (const ViewSet& shape, const ViewDescription& view)
   return s;
 }
 
-/** \a normals turned as \a aligned was from \a original (the rotation of their best fit: the
-  * refinements turn, shift and scale, never mirror). */
-Points
-turnedNormals (const Points& original, const Points& aligned, const Points& normals)
+/** The rotation that took \a original to \a aligned (their best fit: the refinements turn, shift
+  * and scale, never mirror). */
+Eigen::Matrix3d
+turnOf (const Points& original, const Points& aligned)
 {
   const Eigen::Matrix4d fit = Eigen::umeyama (original, aligned, true);
   Eigen::Matrix3d rotation = fit.topLeftCorner<3, 3> ();
-  rotation /= std::cbrt (std::abs (rotation.determinant ()));
-  return rotation * normals;
+  return rotation / std::cbrt (std::abs (rotation.determinant ()));
 }
 
 } // namespace
@@ -215,7 +218,7 @@ viewDistance (const ViewDescription& a, const ViewDescription& b)
   const Eigen::Matrix3d roll = bestRolls (moving, fixed, 1).front ().roll;
   const Points start = roll * moving;
   const Points aligned = refine (start, fixed, fixed, kRefinements);
-  const Points normals = turnedNormals (start, aligned, roll * asMatrix (a.normals));
+  const Points normals = turnOf (start, aligned) * roll * asMatrix (a.normals);
   return coverDistance (aligned, normals, {fixed, asMatrix (b.normals)}, fixed);
 }
 
@@ -258,8 +261,7 @@ singleViewDistance (const ViewDescription& scan, const ViewSet& shape)
     const Surface surface = shape.shape_points.empty () ? seen : inViewFrame (shape, view);
     const Points start = starts[k].roll * moving;
     const Points aligned = refine (refine (start, seen.points, seen.points, kRefinements), surface.points, seen.points, kRefinements);
-    best = std::min (best, coverDistance (aligned, turnedNormals (start, aligned, starts[k].roll * moving_normals), surface,
-                                          seen.points));
+    best = std::min (best, coverDistance (aligned, turnOf (start, aligned) * starts[k].roll * moving_normals, surface, seen.points));
   }
   return best;
 }

@@ -7,6 +7,7 @@
 
 #include <pcl_flowseg/signature/view_sphere.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -24,6 +25,9 @@ constexpr std::size_t kSpacingProbes = 256;
 /** Image cell width in sample spacings: wide enough that a surface facing the camera leaves no
   * empty cell for the far side to show through. */
 constexpr double kCellSpacings = 1.5;
+/** Depth, in image cells, by which a point must lie behind the nearest of its cell to count as
+  * hidden when telling single views (looksLikeSingleView). */
+constexpr double kSingleViewDepthCells = 4.0;
 /** Most image cells along a side (a sample of a few far outliers must not allocate much). */
 constexpr long kMaxCells = 2048;
 
@@ -52,6 +56,36 @@ sampleSpacing (const std::vector<Eigen::Vector3d>& points)
   return nearest[nearest.size () / 2];
 }
 
+/** The shape's principal axes (columns), and the centre and diagonal of its bounding box along them:
+  * the cameras placed in this frame see the same views of a turned or shifted shape. (The view
+  * sphere is symmetric under the axes' sign changes, so their signs do not matter.) */
+struct ShapeFrame
+{
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity ();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero ();
+  double diagonal = 0.0;
+};
+
+ShapeFrame
+principalFrame (const std::vector<Eigen::Vector3d>& points)
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+  for (const auto& p : points)
+    mean += p;
+  mean /= static_cast<double> (points.size ());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
+  for (const auto& p : points)
+    scatter += (p - mean) * (p - mean).transpose ();
+  ShapeFrame frame;
+  frame.axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (scatter).eigenvectors ();
+  Eigen::AlignedBox3d box;
+  for (const auto& p : points)
+    box.extend (frame.axes.transpose () * (p - mean));
+  frame.centre = mean + frame.axes * box.center ();
+  frame.diagonal = box.diagonal ().norm ();
+  return frame;
+}
+
 /** Image coordinates (scaled to the target's distance) and depth of a point. */
 struct Projected
 {
@@ -64,7 +98,7 @@ namespace internal {
 
 std::vector<Eigen::Vector3d>
 visiblePoints (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& camera, const Eigen::Vector3d& target,
-               double spacing)
+               double spacing, long reach, double tolerance)
 {
   const Eigen::Vector3d axis = (target - camera).normalized ();
   const Eigen::Vector3d helper = std::abs (axis.x ()) < 0.9 ? Eigen::Vector3d::UnitX () : Eigen::Vector3d::UnitY ();
@@ -101,16 +135,41 @@ visiblePoints (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d
     long cu, cv;
     cellOf (image[i], cu, cv);
     double front = std::numeric_limits<double>::infinity ();
-    for (long y = std::max (0L, cv - 1); y <= std::min (height - 1, cv + 1); ++y)
-      for (long x = std::max (0L, cu - 1); x <= std::min (width - 1, cu + 1); ++x)
+    for (long y = std::max (0L, cv - reach); y <= std::min (height - 1, cv + reach); ++y)
+      for (long x = std::max (0L, cu - reach); x <= std::min (width - 1, cu + reach); ++x)
         front = std::min (front, nearest[static_cast<std::size_t> (y * width + x)]);
-    if (image[i].depth <= front + 2.0 * cell * image[i].depth / focal)
+    if (image[i].depth <= front + tolerance * cell * image[i].depth / focal)
       visible.push_back (points[i]);
   }
   return visible;
 }
 
 } // namespace internal
+
+bool
+looksLikeSingleView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& origin)
+{
+  std::vector<Eigen::Vector3d> finite;
+  Eigen::AlignedBox3d box;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
+  for (const auto& p : points)
+    if (p.allFinite ())
+    {
+      finite.push_back (p);
+      box.extend (p);
+      centroid += p;
+    }
+  if (finite.size () < kMinViewPoints || !origin.allFinite () || box.contains (origin))
+    return false;
+  centroid /= static_cast<double> (finite.size ());
+  const double spacing = sampleSpacing (finite);
+  if (!(spacing > 0.0))
+    return false;
+  // Only points straight behind others are hidden: a scan's steep surfaces are seen, a complete
+  // shape's far side is not.
+  const std::size_t seen = internal::visiblePoints (finite, origin, centroid, spacing, 0, kSingleViewDepthCells).size ();
+  return static_cast<double> (seen) >= kSingleViewShare * static_cast<double> (finite.size ());
+}
 
 Status
 describeShapeViews (const std::vector<Eigen::Vector3d>& points, std::size_t count, ViewSet& set)
@@ -120,24 +179,20 @@ describeShapeViews (const std::vector<Eigen::Vector3d>& points, std::size_t coun
   if (const Status s = viewSphereDirections (count, directions); !s)
     return s;
   std::vector<Eigen::Vector3d> finite;
-  Eigen::AlignedBox3d box;
   for (const auto& p : points)
     if (p.allFinite ())
-    {
       finite.push_back (p);
-      box.extend (p);
-    }
   if (finite.size () < kMinViewPoints)
     return Status::error ("views need at least " + std::to_string (kMinViewPoints) + " finite points");
-  const double diagonal = box.diagonal ().norm ();
+  const ShapeFrame frame = principalFrame (finite);
   const double spacing = sampleSpacing (finite);
-  if (!(diagonal > 0.0) || !(spacing > 0.0))
+  if (!(frame.diagonal > 0.0) || !(spacing > 0.0))
     return Status::error ("views need points that are not all equal");
   for (const Eigen::Vector3d& d : directions)
   {
-    const Eigen::Vector3d camera = box.center () + kCameraDistance * diagonal * d;
+    const Eigen::Vector3d camera = frame.centre + kCameraDistance * frame.diagonal * (frame.axes * d);
     ViewDescription view;
-    if (internal::describeVisiblePoints (internal::visiblePoints (finite, camera, box.center (), spacing), camera, view))
+    if (internal::describeVisiblePoints (internal::visiblePoints (finite, camera, frame.centre, spacing), camera, view))
       set.views.push_back (std::move (view));
   }
   if (set.views.empty ())

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,15 @@ Status
 writeTopMatchesPng (const std::string& path, const std::vector<std::vector<Eigen::Vector3d>>& shapes,
                     const std::vector<std::string>& labels, const std::vector<std::vector<double>>& similarity,
                     const std::vector<std::size_t>& queries, int k = 5, int cell = 96);
+
+/** \brief Single-view recognition's figure: one row per scan, drawn with its points coloured by
+  * their feature (\a scan_labels, segmentColour; kNoSegment grey) in a blue frame, then its \a k
+  * most similar models by \a similarity (scan x model), green frames for the scan's class, red
+  * otherwise. RGB PNG. Atomic. */
+Status
+writeSingleViewMatchesPng (const std::string& path, const std::vector<std::vector<Eigen::Vector3d>>& scans,
+                           const std::vector<std::vector<std::uint32_t>>& scan_labels, const std::vector<std::string>& scan_classes,
+                           const std::vector<std::vector<Eigen::Vector3d>>& models, const std::vector<std::string>& model_classes,
+                           const std::vector<std::vector<double>>& similarity, int k = 5, int cell = 128);
 
 } // namespace pcl_flowseg

@@ -54,6 +54,8 @@ struct MethodRecognition
   double query_ms = 0.0;
   std::vector<double> class_query_ms; ///< the same per class, in the order of per_class
   double model_ms = 0.0;              ///< mean CPU time to describe one model for the database
+  /** Per query, its similarity to every model (higher = more similar), in the models' order. */
+  std::vector<std::vector<double>> similarity;
 };
 
 /** \brief Told the stage ("describing models", "recognising queries"), jobs done and their number. */

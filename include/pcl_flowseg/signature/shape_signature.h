@@ -17,8 +17,10 @@ namespace pcl_flowseg {
 
 /** \brief The signature of a shape file (anything loadShapeSample reads): sample, segment with
   * \a params, keep the features above \a significance. With input.use_sensor_origin the file's
-  * own sensor origin is the viewpoint (params.interior.viewpoint must then be unset). The message
-  * names the file on failure. */
+  * own sensor origin is the viewpoint (params.interior.viewpoint must then be unset). Without any
+  * viewpoint, a file whose points look like a single view from its sensor origin
+  * (looksLikeSingleView) gets a warning (PCL_WARN) that single-view matching needs the viewpoint.
+  * The message names the file on failure. */
 Status
 signatureOfShapeFile (const std::string& path, const ShapeInputOptions& input, const FlowParameters& params,
                       double significance, Signature& signature);

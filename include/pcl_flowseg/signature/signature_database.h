@@ -74,7 +74,7 @@ constexpr std::size_t kDefaultViewCandidates = 40;
   *     x THICKNESS B1 ... B16                                CONTEXTS lines: inner_contexts
   *                                                           (kContextBins each)
   *     views N SINGLE                                        Signature::views (SINGLE 1: a scan's)
-  *     v DX DY DZ CX CY CZ SCALE B1 ... B80                  N pairs of lines: a view's direction,
+  *     v DX DY DZ ROLL CX CY CZ SCALE B1 ... B80             N pairs of lines: a view's direction,
   *     u M X1 Y1 Z1 NX1 NY1 NZ1 ... NZM                      frame and histogram, its M points and
   *                                                           their normals
   *     o M X1 Y1 Z1 NX1 NY1 NZ1 ... NZM                      ViewSet::shape_points, shape_normals

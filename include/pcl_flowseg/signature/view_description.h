@@ -34,15 +34,17 @@ constexpr std::size_t kNormalNeighbours = 12;
 constexpr std::size_t kMinViewPoints = 16;
 
 /** \brief One view of a shape. The view frame: origin at the visible points' centroid, z along the
-  * line of sight (from the camera to the centroid), x and y across it in a fixed but arbitrary roll,
+  * line of sight (from the camera to the centroid), x along the points' widest spread across it,
   * lengths divided by the points' RMS distance from the centroid. So a view does not change with the
-  * shape's position, orientation or scale, nor with the camera's roll; the roll is found when two
-  * views are compared (viewDistance). */
+  * shape's position, orientation or scale, nor with the camera's roll; the roll between two views
+  * is found when they are compared. */
 struct ViewDescription
 {
   /** Unit direction from the visible points' centroid towards the camera, input coordinates: the
-    * view frame's -z (its x and y follow from it by a fixed rule, viewFrameAxes). */
+    * view frame's -z. */
   Eigen::Vector3f direction = Eigen::Vector3f::UnitZ ();
+  /** The view frame's x: viewFrameAxes (-direction) turned by this angle about z (radians). */
+  float roll = 0.0f;
   Eigen::Vector3f centre = Eigen::Vector3f::Zero (); ///< the view frame's origin, input coordinates
   float scale = 1.0f; ///< the view frame's length unit (RMS radius of the visible points), input units
   std::array<float, kViewHistogramBins> histogram{}; ///< sums to 2 (two blocks of 1)
@@ -64,9 +66,14 @@ struct ViewSet
   std::vector<Eigen::Vector3f> shape_normals; ///< unit normal at each shape point (unoriented)
 };
 
-/** \brief The x, y and z axes (columns) of a view frame whose line of sight is \a sight (unit). */
+/** \brief The x, y and z axes (columns) of a frame whose z is \a sight (unit), x and y across it
+  * by a fixed rule. */
 Eigen::Matrix3d
 viewFrameAxes (const Eigen::Vector3d& sight);
+
+/** \brief The axes (columns) of \a view's frame, input coordinates. */
+Eigen::Matrix3d
+viewAxes (const ViewDescription& view);
 
 /** \brief Describes the points a camera at \a viewpoint saw (a single-view scan): fails when the
   * viewpoint is not finite, lies inside the points' bounding box (a camera inside the object), or
@@ -74,13 +81,25 @@ viewFrameAxes (const Eigen::Vector3d& sight);
 Status
 describeScanView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& viewpoint, ViewDescription& view);
 
-/** \brief Renders \a count views of a complete 3D point sample (cameras on a geodesic sphere of
-  * radius twice the bounding-box diagonal around its centre, looking at the centre) and describes
+/** \brief Renders \a count views of a complete 3D point sample (cameras on a geodesic sphere
+  * turned to the sample's principal axes, at twice the diagonal of its bounding box along those
+  * axes from the box's centre, looking at the centre: the same views however the sample is turned
+  * or shifted) and describes
   * each: the points a view sees are those nearest the camera in their image cell (a depth buffer
   * whose cells match the sample's spacing), and keeps kShapePoints of the sample. Views seeing
   * fewer than kMinViewPoints are left out. */
 Status
 describeShapeViews (const std::vector<Eigen::Vector3d>& points, std::size_t count, ViewSet& set);
+
+/** \brief True when \a points look like a single view seen from \a origin: it lies outside their
+  * bounding box and at least kSingleViewShare of them are seen from it (a complete shape hides
+  * about half of its points from any place). Matching such points as a complete shape ranks them
+  * poorly: callers warn that single-view matching needs the viewpoint. */
+bool
+looksLikeSingleView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& origin);
+
+/** \brief Share of the points a camera must see for them to look like its single view. */
+constexpr double kSingleViewShare = 0.9;
 
 /** \brief The views of a shape file's sample for its signature: the scan's own view when
   * \a viewpoint is given, the rendered ones otherwise; 2D shapes have none. */
