@@ -1,9 +1,10 @@
 /*
- * pcl_flowseg - the views of a complete point sample: cameras on a geodesic sphere, a depth buffer
- * sized to the sample's spacing.
+ * pcl_flowseg - the views of a point sample: of a complete one, cameras on a geodesic sphere and a
+ * depth buffer sized to its spacing; of a scan, its own camera's.
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
 #include "view_rendering.h"
+#include "view_points.h"
 
 #include <pcl_flowseg/signature/view_sphere.h>
 
@@ -200,6 +201,40 @@ describeShapeViews (const std::vector<Eigen::Vector3d>& points, std::size_t coun
   set.shape_points = internal::farthestPoints (finite, kShapePoints);
   set.shape_normals = internal::pointNormals (finite, set.shape_points);
   return Status::success ();
+}
+
+Status
+describeScanView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& viewpoint, ViewDescription& view)
+{
+  if (!viewpoint.allFinite ())
+    return Status::error ("the viewpoint is not finite");
+  std::vector<Eigen::Vector3d> finite;
+  finite.reserve (points.size ());
+  Eigen::AlignedBox3d box;
+  for (const auto& p : points)
+    if (p.allFinite ())
+    {
+      finite.push_back (p);
+      box.extend (p);
+    }
+  if (finite.size () >= kMinViewPoints && box.contains (viewpoint))
+    return Status::error ("the viewpoint lies inside the scanned points' bounding box: a single view is seen from "
+                          "outside the object");
+  return internal::describeVisiblePoints (finite, viewpoint, view);
+}
+
+Status
+describeViewSet (const std::vector<Eigen::Vector3d>& points, int dimension, const std::optional<Eigen::Vector3d>& viewpoint,
+                 ViewSet& set)
+{
+  set = ViewSet ();
+  if (dimension != 3)
+    return Status::success ();
+  if (!viewpoint)
+    return describeShapeViews (points, kDefaultViewCount, set);
+  set.single_view = true;
+  set.views.resize (1);
+  return describeScanView (points, *viewpoint, set.views[0]);
 }
 
 } // namespace pcl_flowseg
