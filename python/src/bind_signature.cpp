@@ -170,6 +170,13 @@ bindSignatureClass (py::module_& m)
       .def_readonly ("unit", &Signature::unit, "The length unit: interior volume^(1/d), input units.")
       .def_readonly ("interior_volume", &Signature::interior_volume)
       .def_readonly ("significance", &Signature::significance)
+      .def_property_readonly (
+          "single_view", [] (const Signature& s) { return s.views.single_view; },
+          "True for a single-view scan's signature (computed with its viewpoint): queries align it with the stored "
+          "shapes' views.")
+      .def_property_readonly (
+          "view_count", [] (const Signature& s) { return s.views.views.size (); },
+          "Views the signature carries: rendered ones of a complete 3D shape, 1 for a scan, 0 in 2D.")
       .def ("__len__", [] (const Signature& s) { return s.points.size (); })
       .def ("__repr__", [] (const Signature& s) {
         return "<Signature " + std::to_string (s.dimension) + "D, " + std::to_string (s.points.size ()) + " features>";

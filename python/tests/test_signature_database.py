@@ -272,3 +272,32 @@ def test_signature_of_a_scan_file_from_its_own_viewpoint(tmp_path):
         fs.signature_of_file(scan, use_sensor_origin=True, viewpoint=(0.5, 0.0, 12.0))
     with pytest.raises(OSError, match="sensor origin"):
         fs.signature_of_file(mesh, use_sensor_origin=True)
+
+
+def _box_off(path, sides):
+    """An axis-aligned box with the given side lengths, as an OFF mesh."""
+    corners = [(x * sides[0], y * sides[1], z * sides[2]) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+    faces = [(0, 2, 1), (1, 2, 3), (4, 5, 6), (5, 7, 6), (0, 1, 4), (1, 5, 4),
+             (2, 6, 3), (3, 6, 7), (0, 4, 2), (2, 4, 6), (1, 3, 5), (3, 7, 5)]
+    with open(path, "w") as f:
+        f.write("OFF\n8 12 0\n" + "".join("%g %g %g\n" % c for c in corners) + "".join("3 %d %d %d\n" % t for t in faces))
+
+
+def test_a_scan_query_finds_its_shape_among_complete_ones(tmp_path, capfd):
+    balls, slab, scan = str(tmp_path / "balls.off"), str(tmp_path / "slab.off"), str(tmp_path / "scan.pcd")
+    _two_balls_off(balls)
+    _box_off(slab, (3.0, 1.5, 0.4))
+    subprocess.run([app("flowseg_sample"), balls, "--scan-from", "3,4,10", "-n", "3000", "-o", scan, "-q"], check=True)
+    db = fs.Database()
+    for name, mesh in (("balls", balls), ("slab", slab)):
+        complete = fs.signature_of_file(mesh)
+        assert not complete.single_view and complete.view_count == 42
+        db.add(name, name, complete)
+    query = fs.signature_of_file(scan, use_sensor_origin=True)
+    assert query.single_view and query.view_count == 1
+    hits = db.query(query, k=0)
+    assert [h.name for h in hits] == ["balls", "slab"] and all(h.compared for h in hits)
+    assert hits[0].distance < hits[1].distance
+    capfd.readouterr()
+    fs.signature_of_file(scan)  # its viewpoint forgotten: warned
+    assert "looks like a single view" in capfd.readouterr().err
