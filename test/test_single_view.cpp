@@ -97,7 +97,7 @@ protocolScan (const TriangleMesh& mesh, const Eigen::Vector3d& direction, Eigen:
 
 } // namespace
 
-// From oblique directions: end-on, a rod and the long bar of an L look alike (docs/single_view.md).
+// From oblique directions: end-on, a rod and the long bar of an L look alike (docs/method.md).
 TEST (SingleView, AScanOfAStoredShapeFindsItFirst)
 {
   const std::vector<TriangleMesh> shapes = testShapes ();

@@ -165,7 +165,16 @@ bindDatabase (py::module_& m)
           "Writes the whole database (replacing the file) under its lock, atomically: readers see the old or the new file.")
       .def ("query", &query, py::arg ("signature"), py::arg ("k") = pcl_flowseg::kDefaultQueryResults, py::arg ("candidates") = pcl_flowseg::kDefaultCandidates,
             "The k most similar stored shapes (all when k = 0), comparing in full the `candidates` nearest by summary (0 = all); "
-            "keywords as match().")
+            "a single-view scan's signature (single_view) is aligned with the min(candidates, view_candidates) shapes whose "
+            "views' histograms are nearest; keywords as match().")
+      .def_property (
+          "view_candidates", [] (const SignatureDatabase& db) { return db.getViewCandidates (); },
+          [] (SignatureDatabase& db, std::size_t count) {
+            if (count == 0)
+              throw py::value_error ("view_candidates must be at least 1");
+            db.setViewCandidates (count);
+          },
+          "How many stored shapes a single-view query aligns with the scan (default 40).")
       .def ("entries", [] (const SignatureDatabase& db) {
             std::vector<pcl_flowseg::ShapeEntry> entries;
             {

@@ -298,6 +298,11 @@ def test_a_scan_query_finds_its_shape_among_complete_ones(tmp_path, capfd):
     hits = db.query(query, k=0)
     assert [h.name for h in hits] == ["balls", "slab"] and all(h.compared for h in hits)
     assert hits[0].distance < hits[1].distance
+    assert db.view_candidates == 40
+    db.view_candidates = 1
+    assert sum(h.compared for h in db.query(query, k=0)) == 1
+    with pytest.raises(ValueError, match="at least 1"):
+        db.view_candidates = 0
     capfd.readouterr()
     fs.signature_of_file(scan)  # its viewpoint forgotten: warned
     assert "looks like a single view" in capfd.readouterr().err
