@@ -158,6 +158,9 @@ TEST (SingleView, BadViewpointsAreRefused)
   s = describeScanView (scan, Eigen::Vector3d (1.0, 0.75, 0.2), view); // inside the slab
   EXPECT_FALSE (s);
   EXPECT_NE (s.message.find ("inside"), std::string::npos) << s.message;
+  s = describeScanView (scan, Eigen::Vector3d (1e300, 0, 0), view);
+  EXPECT_FALSE (s);
+  EXPECT_NE (s.message.find ("absurdly far"), std::string::npos) << s.message;
   s = describeScanView ({scan.begin (), scan.begin () + 5}, viewpoint, view);
   EXPECT_FALSE (s);
   EXPECT_NE (s.message.find ("at least"), std::string::npos) << s.message;
@@ -195,7 +198,8 @@ TEST (SingleView, ViewsSurviveTheDatabaseFile)
     EXPECT_NEAR ((a.views[0].points[0] - b.views[0].points[0]).norm (), 0.0, 1e-3);
   }
   Eigen::Vector3d viewpoint;
-  const Signature query = signatureOf (protocolScan (shapes[3], Eigen::Vector3d (-1, 2, 2), viewpoint), viewpoint);
+  const std::vector<Eigen::Vector3d> scan = protocolScan (shapes[3], Eigen::Vector3d (-1, 2, 2), viewpoint);
+  const Signature query = signatureOf (scan, viewpoint); // the scan first: it sets the viewpoint
   const auto before = db.query (query, 0, pcl::SignatureMatcher ());
   const auto after = loaded.query (query, 0, pcl::SignatureMatcher ());
   ASSERT_EQ (before.size (), after.size ());

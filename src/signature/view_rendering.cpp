@@ -29,6 +29,8 @@ constexpr double kCellSpacings = 1.5;
 /** Depth, in image cells, by which a point must lie behind the nearest of its cell to count as
   * hidden when telling single views (looksLikeSingleView). */
 constexpr double kSingleViewDepthCells = 4.0;
+/** Farthest a scan's viewpoint may lie from its points' bounding-box centre, in box diagonals. */
+constexpr double kFarthestViewpoint = 1e6;
 /** Most image cells along a side (a sample of a few far outliers must not allocate much). */
 constexpr long kMaxCells = 2048;
 
@@ -220,6 +222,9 @@ describeScanView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vecto
   if (finite.size () >= kMinViewPoints && box.contains (viewpoint))
     return Status::error ("the viewpoint lies inside the scanned points' bounding box: a single view is seen from "
                           "outside the object");
+  if (finite.size () >= kMinViewPoints &&
+      !((viewpoint - box.center ()).norm () <= kFarthestViewpoint * std::max (box.diagonal ().norm (), 1e-300)))
+    return Status::error ("the viewpoint lies absurdly far from the scanned points (more than 10^6 times their size)");
   return internal::describeVisiblePoints (finite, viewpoint, view);
 }
 

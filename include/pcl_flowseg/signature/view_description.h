@@ -76,8 +76,8 @@ Eigen::Matrix3d
 viewAxes (const ViewDescription& view);
 
 /** \brief Describes the points a camera at \a viewpoint saw (a single-view scan): fails when the
-  * viewpoint is not finite, lies inside the points' bounding box (a camera inside the object), or
-  * fewer than kMinViewPoints points are finite. */
+  * viewpoint is not finite, lies inside the points' bounding box (a camera inside the object) or
+  * more than 10^6 box diagonals away, or fewer than kMinViewPoints points are finite. */
 Status
 describeScanView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& viewpoint, ViewDescription& view);
 
