@@ -176,6 +176,15 @@ TEST (SingleView, BadViewpointsAreRefused)
   EXPECT_FALSE (s);
 }
 
+TEST (SingleView, AScanSignatureWithoutItsViewFindsNothing)
+{
+  const SignatureDatabase db = databaseOf ({testShapes ()[0]});
+  Signature broken;
+  broken.views.single_view = true; // no view: checkViewSet refuses it, a query finds nothing
+  EXPECT_FALSE (checkViewSet (broken.views));
+  EXPECT_TRUE (db.query (broken, 0, pcl::SignatureMatcher ()).empty ());
+}
+
 TEST (SingleView, ViewsSurviveTheDatabaseFile)
 {
   const std::vector<TriangleMesh> shapes = testShapes ();

@@ -17,6 +17,8 @@ std::vector<QueryHit>
 SignatureDatabase::querySingleViewLocked (const Signature& signature, std::size_t k, const pcl::SignatureMatcher& matcher,
                                           std::size_t candidates) const
 {
+  if (signature.views.views.size () != 1)
+    return {}; // not a scan's view set (checkViewSet refuses it): nothing to align
   // Every stored 3D shape with views by the histogram distance of its nearest view: the nearest
   // are the candidates, aligned with the scan in full.
   std::vector<QueryHit> hits;
