@@ -508,6 +508,10 @@ quiet_run flowseg_segment "$seg" "$work/scan.pcd" -o "$work/q" -q
 quiet_run flowseg_signature "$sig" "$work/scan.pcd" -q
 quiet_run flowseg_match "$mat" "$work/scan.pcd" "$work/scan.pcd" -q
 quiet_run flowseg_db "$db" query "$work/scans_own.db" "$work/scan.pcd" --use-sensor-origin -q
+"$db" build "$work/no_views.db" "$work/scans" -q --use-sensor-origin --no-views
+[ "$(wc -c < "$work/no_views.db")" -lt "$(wc -c < "$work/scans_own.db")" ] && ! grep -q '^v ' "$work/no_views.db"
+check "db build --no-views stores no views, and a smaller file" $?
+expect "db query against a database without views warns" 0 "none of the 4 stored shapes has views" -- "$db" query "$work/no_views.db" "$work/scan.pcd" --use-sensor-origin
 expect "db query of a scan without its viewpoint warns" 0 "scan.pcd looks like a single view seen from its sensor origin \(0.5, 0, 12\): single-view matching needs that viewpoint" -- "$db" query "$work/scans_own.db" "$work/scan.pcd" -q
 expect "db query of a complete shape gives no single-view warning" 0 "" -- "$db" query "$work/scans_own.db" "$src/samples/snowman3d.pcd" -q
 ! grep -q "single view" "$work/err.txt"; check "db query of a complete shape: no single-view warning" $?
