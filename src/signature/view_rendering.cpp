@@ -89,6 +89,21 @@ principalFrame (const std::vector<Eigen::Vector3d>& points)
   return frame;
 }
 
+/** The finite ones of \a points, and their bounding \a box. */
+std::vector<Eigen::Vector3d>
+finitePoints (const std::vector<Eigen::Vector3d>& points, Eigen::AlignedBox3d& box)
+{
+  std::vector<Eigen::Vector3d> finite;
+  finite.reserve (points.size ());
+  for (const auto& p : points)
+    if (p.allFinite ())
+    {
+      finite.push_back (p);
+      box.extend (p);
+    }
+  return finite;
+}
+
 /** Image coordinates (scaled to the target's distance) and depth of a point. */
 struct Projected
 {
@@ -152,18 +167,13 @@ visiblePoints (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d
 bool
 looksLikeSingleView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& origin)
 {
-  std::vector<Eigen::Vector3d> finite;
   Eigen::AlignedBox3d box;
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
-  for (const auto& p : points)
-    if (p.allFinite ())
-    {
-      finite.push_back (p);
-      box.extend (p);
-      centroid += p;
-    }
+  const std::vector<Eigen::Vector3d> finite = finitePoints (points, box);
   if (finite.size () < kMinViewPoints || !origin.allFinite () || box.contains (origin))
     return false;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
+  for (const auto& p : finite)
+    centroid += p;
   centroid /= static_cast<double> (finite.size ());
   const double spacing = sampleSpacing (finite);
   if (!(spacing > 0.0))
@@ -181,10 +191,8 @@ describeShapeViews (const std::vector<Eigen::Vector3d>& points, std::size_t coun
   std::vector<Eigen::Vector3d> directions;
   if (const Status s = viewSphereDirections (count, directions); !s)
     return s;
-  std::vector<Eigen::Vector3d> finite;
-  for (const auto& p : points)
-    if (p.allFinite ())
-      finite.push_back (p);
+  Eigen::AlignedBox3d box;
+  const std::vector<Eigen::Vector3d> finite = finitePoints (points, box);
   if (finite.size () < kMinViewPoints)
     return Status::error ("views need at least " + std::to_string (kMinViewPoints) + " finite points");
   const ShapeFrame frame = principalFrame (finite);
@@ -210,15 +218,8 @@ describeScanView (const std::vector<Eigen::Vector3d>& points, const Eigen::Vecto
 {
   if (!viewpoint.allFinite ())
     return Status::error ("the viewpoint is not finite");
-  std::vector<Eigen::Vector3d> finite;
-  finite.reserve (points.size ());
   Eigen::AlignedBox3d box;
-  for (const auto& p : points)
-    if (p.allFinite ())
-    {
-      finite.push_back (p);
-      box.extend (p);
-    }
+  const std::vector<Eigen::Vector3d> finite = finitePoints (points, box);
   if (finite.size () >= kMinViewPoints && box.contains (viewpoint))
     return Status::error ("the viewpoint lies inside the scanned points' bounding box: a single view is seen from "
                           "outside the object");
