@@ -267,7 +267,7 @@ TEST (ResultWriter, SegmentationOutputsAreWellFormed)
   EXPECT_NE (json.find ("\"rho\": " + rho.str () + ",\n"), std::string::npos);
   EXPECT_NE (json.find ("\"parameters\": {\"preparation\": {\"dimension\": \"auto\""), std::string::npos);
   EXPECT_NE (json.find ("\"merge\": {\"rho\": " + rho.str () + ", \"sampling_tolerance\""), std::string::npos);
-  EXPECT_NE (json.find ("\"interior\": {\"separate_interior\": false, \"denoising\": \"auto\", \"viewpoint\": null, \"manifold_repair\": true, \"hidden_side\": true}"), std::string::npos);
+  EXPECT_NE (json.find ("\"interior\": {\"separate_interior\": false, \"denoising\": \"auto\", \"viewpoint\": null, \"manifold_repair\": true, \"hidden_side\": true, \"exterior_opening\": 4}"), std::string::npos);
   EXPECT_EQ (std::count (json.begin (), json.end (), '{'), std::count (json.begin (), json.end (), '}'));
   EXPECT_EQ (json.find ("nan"), std::string::npos);
   EXPECT_EQ (json.find (": inf"), std::string::npos);

@@ -137,6 +137,7 @@ interiorReport (const pcl_flowseg::InteriorReport& r)
   d["nonmanifold_vertices"] = r.nonmanifold_vertices;
   d["vertices_off_boundary"] = r.vertices_off_boundary;
   d["ray_cells"] = r.ray_cells;
+  d["opening_cells"] = r.opening_cells;
   d["repaired_cells"] = r.repaired_cells;
   d["island_cells"] = r.island_cells;
   d["surface_variation"] = r.surface_variation;
@@ -328,7 +329,7 @@ points: (n, 2) or (n, 3) float32/float64 array (2 columns: a 2D shape). NaN/Inf 
 normals: None or (n, 3) array of outward normals (evidence for the interior/exterior separation).
 progress: None or a callable(stage: str, fraction: float), called during the run.
 Keywords (see defaults()): dimension, planar_tolerance, outliers, smoothing, smoothing_passes, rho, sampling_tolerance, stump_ratio,
-    compact_rho, compact_size, min_part_share, single_view_min_part_share, separate, denoising, viewpoint, manifold_repair, hidden_side, features, threads, memory_limit,
+    compact_rho, compact_size, min_part_share, single_view_min_part_share, separate, denoising, viewpoint, manifold_repair, hidden_side, exterior_opening, features, threads, memory_limit,
     significance.
 Raises ValueError for input that cannot be segmented or a parameter out of range, TypeError for
 an unknown keyword. The GIL is released during the computation.)doc");

@@ -101,6 +101,10 @@ addInterior (std::vector<Spec>& t)
   t.push_back (switchField<FP> ({"hidden_side", "", "interior", ParameterType::Switch, "", "true, false",
                                  "3D, with a viewpoint: guess the side the sensor cannot see, so that seen parts get a volume and features of their own"},
                                 [] (FP& p) -> bool& { return p.interior.hidden_side; }));
+  t.push_back (numberField<FP> ({"exterior_opening", "", "interior", ParameterType::Number, "sample spacings (median nearest-sample distance)",
+                                 "0 (off), or finite >= 3",
+                                 "3D, no viewpoint: space reached from beyond the hull through openings this wide is outside (cavities, space under tables), even past noisy thin walls"},
+                                [] (FP& p) -> double& { return p.interior.exterior_opening; }));
 }
 
 void

@@ -60,6 +60,10 @@ checkParameters (const FlowParameters& p)
   const Denoising n = p.interior.denoising;
   if (n != Denoising::Automatic && n != Denoising::Off && n != Denoising::Always)
     return Status::error ("denoising must be automatic, off or always");
+  const double opening = p.interior.exterior_opening;
+  if (!std::isfinite (opening) || (opening != 0.0 && opening < kMinExteriorOpening))
+    return Status::error ("the exterior opening must be 0 (off) or a finite number >= " + std::to_string (kMinExteriorOpening).substr (0, 3) +
+                          " sample spacings" + got (opening));
   if (p.interior.viewpoint && !p.interior.viewpoint->allFinite ())
     return Status::error ("the viewpoint has non-finite coordinates");
   if (p.features != FeatureSide::Interior && p.features != FeatureSide::Exterior && p.features != FeatureSide::Both)

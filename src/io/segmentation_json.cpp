@@ -126,7 +126,7 @@ writeInterior (std::ostream& out, const InteriorReport& in)
         << ", \"manifold\": " << jsonBool (in.manifold) << ", \"nonmanifold_edges\": " << in.nonmanifold_edges
         << ", \"nonmanifold_vertices\": " << in.nonmanifold_vertices << ", \"vertices_off_boundary\": " << in.vertices_off_boundary
         << ", \"surface_variation\": " << (in.surface_variation < 0 ? std::string ("null") : num (in.surface_variation))
-        << ", \"smoothing_passes\": " << in.smoothing_passes << ", \"ray_cells\": " << in.ray_cells
+        << ", \"smoothing_passes\": " << in.smoothing_passes << ", \"ray_cells\": " << in.ray_cells << ", \"opening_cells\": " << in.opening_cells
         << ", \"repaired_cells\": " << in.repaired_cells << ", \"island_cells\": " << in.island_cells;
   out << "},\n";
 }

@@ -155,7 +155,16 @@ struct InteriorParameters
     * (silhouette or occlusion edge) behind it, so that parts get a volume and their own features
     * instead of one shell. The added vertices label no point (FlowResult::hidden_side_vertices). */
   bool hidden_side = true;
+  /** 3D, without a viewpoint, in sample spacings (the median distance to the nearest sample): the
+    * space a ball of this radius reaches from beyond the convex hull, between samples at least
+    * twice as far apart, is evidence of the outside (a cup's cavity, the space under a table),
+    * however the surfaces of a noisy thin wall are labelled. 0 = off; narrower openings pass
+    * through the gaps of a random sample, so it must be at least kMinExteriorOpening. */
+  double exterior_opening = 4.0;
 };
+
+/** \brief Smallest InteriorParameters::exterior_opening other than 0, in sample spacings. */
+constexpr double kMinExteriorOpening = 3.0;
 
 /** \brief Most worker threads a run may be given (ExecutionParameters::threads). */
 constexpr unsigned kMaxThreads = 1024;

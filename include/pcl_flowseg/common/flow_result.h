@@ -177,6 +177,9 @@ struct InteriorReport
   std::size_t repaired_cells = 0;
   bool manifold = false; ///< closed, and no non-manifold edge or vertex
   std::size_t ray_cells = 0; ///< cells marked outside by sensor rays (viewpoint given)
+  /** Cells marked outside as reached from beyond the convex hull through openings wider than
+    * InteriorParameters::exterior_opening (3D without a viewpoint). */
+  std::size_t opening_cells = 0;
   /** Median over the samples of the surface variation of their nearest neighbours (smallest
     * PCA eigenvalue over the sum; in 2D the same for the curve): small for clean dense samples,
     * large for noisy ones. Computed only when the raw labelling left many samples off its boundary

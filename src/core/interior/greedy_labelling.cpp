@@ -5,6 +5,7 @@
 #include "core/interior/greedy_labelling.h"
 
 #include "core/geometry/cell_geometry.h"
+#include "core/interior/open_exterior.h"
 #include "core/interior/sensor_rays.h"
 #include "core/support/cell_heap.h"
 #include "core/support/parallel.h"
@@ -94,6 +95,23 @@ public:
     return marked;
   }
 
+  /** Wide openings: the cells a ball of \a opening_spacings sample spacings reaches from beyond
+    * the hull are outside, as strongly as on a sensor ray. Returns the cells marked. */
+  std::size_t
+  openingEvidence (double opening_spacings)
+  {
+    const double opening = opening_spacings * medianNearestDistance (vertices_, cells_);
+    const std::vector<std::uint8_t> reached = openExteriorCells (vertices_, cells_, opening);
+    std::size_t marked = 0;
+    for (std::size_t c = 0; c < cells_.size (); ++c)
+      if (reached[c])
+      {
+        evidence (c, true, 1.0);
+        ++marked;
+      }
+    return marked;
+  }
+
   /** The greedy pass: the most certain undecided cell takes its label and tells its neighbours.
     * A cell's evidence no longer changes once it is labelled, so its label is the side its evidence
     * favours, read off at the end (a cell without any evidence is outside). */
@@ -158,7 +176,7 @@ private:
 
 } // namespace
 
-std::size_t
+ExtraEvidence
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
                     const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
                     std::size_t seen_vertices)
@@ -167,7 +185,7 @@ labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<Fl
                              seen_vertices, measureFacetAgreements (vertices, cells, dimension));
 }
 
-std::size_t
+ExtraEvidence
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
                     const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
                     std::size_t seen_vertices, std::vector<GreedyCell>&& measured)
@@ -176,9 +194,13 @@ labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<Fl
   labelling.hullEvidence ();
   if (!vertex_normals.empty ())
     labelling.normalEvidence (vertex_normals);
-  const std::size_t ray_cells = params.viewpoint ? labelling.rayEvidence (*params.viewpoint, seen_vertices) : 0;
+  ExtraEvidence extra;
+  if (params.viewpoint)
+    extra.ray_cells = labelling.rayEvidence (*params.viewpoint, seen_vertices);
+  else if (dimension == 3 && params.exterior_opening > 0.0)
+    extra.opening_cells = labelling.openingEvidence (params.exterior_opening);
   labelling.propagate ();
-  return ray_cells;
+  return extra;
 }
 
 } // namespace core

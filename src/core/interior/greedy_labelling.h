@@ -14,6 +14,13 @@
 namespace pcl_flowseg {
 namespace core {
 
+/** \brief Cells that heard evidence other than their facets'. */
+struct ExtraEvidence
+{
+  std::size_t ray_cells = 0;     ///< free space on a sensor ray
+  std::size_t opening_cells = 0; ///< reached through wide openings (InteriorParameters::exterior_opening)
+};
+
 /** \brief Sets FlowCell::inside of every cell of \a cells (a triangulation of \a vertices).
   *
   * Evidence lives on facets (measureFacetAgreements): the cosine of the angle between the
@@ -25,14 +32,17 @@ namespace core {
   * crust labels its poles, so that weak, contradictory evidence is decided last.
   * Only the first \a seen_vertices vertices are samples the sensor saw (the rest were guessed
   * behind them: they cast no ray).
-  * \return the number of cells the sensor rays marked as free space. */
-std::size_t
+  * In 3D without a viewpoint, the cells reached from beyond the hull through openings wider than
+  * params.exterior_opening sample spacings (openExteriorCells) are evidence of the outside, as
+  * strong as a sensor ray.
+  * \return the cells marked by each kind of evidence beyond the facets. */
+ExtraEvidence
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
                     const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
                     std::size_t seen_vertices);
 
 /** \brief The same, on agreements \a measured ahead by measureFacetAgreements of the same cells. */
-std::size_t
+ExtraEvidence
 labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<FlowCell>& cells, int dimension,
                     const InteriorParameters& params, const std::vector<Eigen::Vector3d>& vertex_normals,
                     std::size_t seen_vertices, std::vector<GreedyCell>&& measured);

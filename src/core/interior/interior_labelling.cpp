@@ -41,8 +41,10 @@ labelRawSample (FlowResult& r, const InteriorParameters& params, const std::vect
 {
   if (agreements.size () != r.cells.size ())
     agreements = measureFacetAgreements (r.vertices, r.cells, r.dimension);
-  r.interior.ray_cells = labelCellsGreedily (r.vertices, r.cells, r.dimension, params, vertex_normals,
-                                              r.vertices.size () - r.hidden_side_vertices, std::move (agreements));
+  const ExtraEvidence extra = labelCellsGreedily (r.vertices, r.cells, r.dimension, params, vertex_normals,
+                                                  r.vertices.size () - r.hidden_side_vertices, std::move (agreements));
+  r.interior.ray_cells = extra.ray_cells;
+  r.interior.opening_cells = extra.opening_cells;
   measureAndRepair (r, params);
 }
 
@@ -89,7 +91,9 @@ labelSmoothedSample (FlowResult& r, const InteriorParameters& params, const std:
       labelRawSample (r, params, vertex_normals);
     return;
   }
-  r.interior.ray_cells = labelCellsGreedily (points, smooth_cells, d, params, vertex_normals, points.size () - r.hidden_side_vertices);
+  const ExtraEvidence extra = labelCellsGreedily (points, smooth_cells, d, params, vertex_normals, points.size () - r.hidden_side_vertices);
+  r.interior.ray_cells = extra.ray_cells;
+  r.interior.opening_cells = extra.opening_cells;
   transferLabels (points, smooth_cells, r);
   measureAndRepair (r, params);
 }
