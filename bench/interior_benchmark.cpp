@@ -87,7 +87,7 @@ parseList (const char* text)
   return v;
 }
 
-/** A whole finite number >= 0 (an MLS radius in sample spacings); false for anything else. */
+/** A finite number >= 0 (a radius or an opening in sample spacings); false for anything else. */
 bool
 parseRadius (const char* text, double& radius)
 {
@@ -109,6 +109,7 @@ struct Options
   pcl_flowseg::Denoising denoising = pcl_flowseg::Denoising::Automatic;
   pcl_flowseg::PreparationParameters preparation; // its smoothing and smoothing_passes
   double mls_radius = 0.0; // > 0: PCL's MovingLeastSquares before the segmentation, radius in sample spacings
+  double exterior_opening = pcl_flowseg::InteriorParameters ().exterior_opening;
 };
 
 void
@@ -116,11 +117,12 @@ printUsage ()
 {
   std::fprintf (stderr, "usage: flowseg_bench_interior [--meshes DIR] [--per-class N] [--points 5000,50000] [--noise 0,0.0025,0.005]\n"
                         "                              [--only NAME] [--peer poisson] [--denoise auto|off|on] [--smooth auto|off|on]\n"
-                        "                              [--smooth-passes N] [--mls R] [--verbose]\n"
+                        "                              [--smooth-passes N] [--mls R] [--exterior-opening S] [--verbose]\n"
                         "  --meshes DIR: .off/.obj meshes in DIR and its subfolders (a subfolder is a class)\n"
                         "  --per-class N: the first N meshes of each subfolder, by name (default: all)\n"
                         "  --peer poisson: CGAL's Poisson reconstruction on jet normals oriented by a spanning tree, scored on the same cells\n"
                         "  --smooth, --smooth-passes: smoothing before the triangulation (PreparationParameters::smoothing, ::smoothing_passes)\n"
+                        "  --exterior-opening S: InteriorParameters::exterior_opening, sample spacings (0: off; default 4)\n"
                         "  --mls R: PCL's MovingLeastSquares (quadratic) first, radius R sample spacings (0: none)\n"
                         "  noise: standard deviation as a fraction of the bounding-box diagonal\n");
 }
@@ -155,6 +157,7 @@ parseOptions (int argc, char** argv, Options& o)
     else if (a == "--smooth" && has_value) o.preparation.smoothing = smoothingMode (argv[++i]);
     else if (a == "--smooth-passes" && has_value) o.preparation.smoothing_passes = static_cast<unsigned> (std::atoi (argv[++i]));
     else if (a == "--mls" && has_value && parseRadius (argv[i + 1], o.mls_radius)) ++i;
+    else if (a == "--exterior-opening" && has_value && parseRadius (argv[i + 1], o.exterior_opening)) ++i;
     else
     {
       printUsage ();
@@ -227,6 +230,7 @@ evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, con
   pcl_flowseg::FlowParameters params;
   params.preparation.dimension = pcl_flowseg::DimensionMode::Spatial;
   params.interior.denoising = o.denoising;
+  params.interior.exterior_opening = o.exterior_opening;
   params.preparation.smoothing = o.preparation.smoothing;
   params.preparation.smoothing_passes = o.preparation.smoothing_passes;
   pcl_flowseg::FlowResult r;

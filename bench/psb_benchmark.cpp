@@ -74,7 +74,7 @@ const char* const kUsage =
   "                         [--single-view-min-part-share F]\n"
   "                         [--noise F (0)] [--outliers F (0)] [--scan-from six|X,Y,Z]\n"
   "                         [--outlier-removal auto|off|on (auto)] [--smooth auto|off|on (auto)] [--smooth-passes N (6)]\n"
-  "                         [--mls R (0)]\n"
+  "                         [--mls R (0)] [--exterior-opening S (4)]\n"
   "  --noise F: Gaussian noise of standard deviation F times the bounding-box diagonal\n"
   "  --outliers F: that share of the sample replaced by points uniform in its bounding box\n"
   "  --scan-from: single views instead of whole samples, the sensor 3 bounding radii from the centre\n"
@@ -84,6 +84,7 @@ const char* const kUsage =
   "  --mls R: PCL's MovingLeastSquares (quadratic) on each sample before flowseg, radius R sample\n"
   "           spacings (0: none), to weigh it against the module's smoothing (--smooth); its\n"
   "           time is counted in flowseg's\n"
+  "  --exterior-opening S: InteriorParameters::exterior_opening in sample spacings (0: off)\n"
   "  --paper-rule: the paper's merging rule alone (tolerance, stump ratio, compact size 0)\n"
   "  --significance F: only features above F of the features' volume label faces; the faces of the\n"
   "                    others take the label of the nearest significant samples\n"
@@ -196,7 +197,8 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
        : a == "--min-part-share"   ? o.flow.merge.min_part_share
                                    : o.flow.merge.single_view_min_part_share) = v;
     }
-    else if ((a == "--tolerance" || a == "--stump-ratio" || a == "--compact-rho" || a == "--compact-size") && has_value)
+    else if ((a == "--tolerance" || a == "--stump-ratio" || a == "--compact-rho" || a == "--compact-size" || a == "--exterior-opening") &&
+             has_value)
     {
       char* end = nullptr;
       const double v = std::strtod (argv[++i], &end);
@@ -205,7 +207,8 @@ parseOptions (int argc, char** argv, Options& o, std::string& error)
       (a == "--tolerance"     ? o.flow.merge.sampling_tolerance
        : a == "--stump-ratio" ? o.flow.merge.stump_ratio
        : a == "--compact-rho" ? o.flow.merge.compact_rho
-                              : o.flow.merge.compact_size) = v;
+       : a == "--compact-size" ? o.flow.merge.compact_size
+                               : o.flow.interior.exterior_opening) = v;
     }
     else if (a == "--significance" && has_value)
     {
