@@ -305,8 +305,9 @@ TEST (Interior, ViewpointMarksTheSpaceInFrontOfAScanOutside)
 
 TEST (Interior, ViewpointOpensABowl)
 {
-  // The inside of a bowl (lower cap of the unit sphere) scanned from above: without the sensor the
-  // cap looks like a solid half-ball; the rays show that the space above it is free.
+  // The inside of a bowl (lower cap of the unit sphere) scanned from above: without the sensor (and
+  // without the open exterior's evidence) the cap looks like a solid half-ball; the rays show that
+  // the space above it is free.
   std::vector<V> pts;
   for (const auto& p : sphere (V::Zero (), 1.0, 8000, 12))
     if (p.z () < -0.1)
@@ -324,8 +325,10 @@ TEST (Interior, ViewpointOpensABowl)
     p.interior.viewpoint = V (0, 0, 1.5);
   });
   EXPECT_GT (bowlOutside (with), 0.99);
-  const FlowResult without = segmentWith (pts);
+  // Without the sensor, only the open exterior's evidence (exterior_opening) opens it.
+  const FlowResult without = segmentWith (pts, [] (FlowParameters& p) { p.interior.exterior_opening = 0.0; });
   EXPECT_GT (bowlOutside (with), bowlOutside (without));
+  EXPECT_GT (bowlOutside (segmentWith (pts)), 0.99);
 }
 
 TEST (Interior, OrientedNormalsAreUsed)

@@ -88,6 +88,20 @@ insideShare (const FlowResult& r, const std::function<bool (const V&)>& where)
   return volume > 0.0 ? inside / volume : 0.0;
 }
 
+/** Volume IoU of the cells labelled inside with the cells whose centroid \a truth holds. */
+double
+volumeIou (const FlowResult& r, const std::function<bool (const V&)>& truth)
+{
+  double both = 0.0, either = 0.0;
+  for (const auto& c : r.cells)
+  {
+    const bool labelled = c.inside == 1, truly = truth (c.centroid);
+    both += labelled && truly ? c.volume : 0.0;
+    either += labelled || truly ? c.volume : 0.0;
+  }
+  return either > 0.0 ? both / either : 0.0;
+}
+
 } // namespace
 
 TEST (ThinWalls, ANoisyCupKeepsItsCavityOutside)
@@ -102,6 +116,10 @@ TEST (ThinWalls, ANoisyCupKeepsItsCavityOutside)
   const FlowResult without = segmentCup (pts, 0.0);
   EXPECT_EQ (without.interior.opening_cells, 0u);
   EXPECT_LT (insideShare (with, cavity), insideShare (without, cavity));
+  const auto solid = [&] (const V& p) { return cup.contains (p); };
+  // The walls keep part of their inside: the samples face the side the flood reached them from.
+  EXPECT_GT (volumeIou (with, solid), 0.35);
+  EXPECT_GT (volumeIou (with, solid), volumeIou (without, solid) + 0.2);
 }
 
 TEST (ThinWalls, TheFloodDoesNotEnterTheWalls)

@@ -57,7 +57,8 @@ public:
     }
   }
 
-  /** Oriented normals: a cell whose circumcentre lies along the normals of its vertices is outside. */
+  /** Oriented normals: a cell whose circumcentre lies along the normals of its vertices is outside.
+    * Vertices with a zero (or non-finite) normal say nothing. */
   void
   normalEvidence (const std::vector<Eigen::Vector3d>& vertex_normals)
   {
@@ -96,12 +97,16 @@ public:
   }
 
   /** Wide openings: the cells a ball of \a opening_spacings sample spacings reaches from beyond
-    * the hull are outside, as strongly as on a sensor ray. Returns the cells marked. */
+    * the hull are outside, as strongly as on a sensor ray; without \a given_normals, the
+    * directions from the samples to those cells orient them (normalEvidence). Returns the cells
+    * marked. */
   std::size_t
-  openingEvidence (double opening_spacings)
+  openingEvidence (double opening_spacings, bool given_normals)
   {
     const double opening = opening_spacings * medianNearestDistance (vertices_, cells_);
     const std::vector<std::uint8_t> reached = openExteriorCells (vertices_, cells_, opening);
+    if (!given_normals)
+      normalEvidence (openingNormals (vertices_, cells_, reached));
     std::size_t marked = 0;
     for (std::size_t c = 0; c < cells_.size (); ++c)
       if (reached[c])
@@ -198,7 +203,7 @@ labelCellsGreedily (const std::vector<Eigen::Vector3d>& vertices, std::vector<Fl
   if (params.viewpoint)
     extra.ray_cells = labelling.rayEvidence (*params.viewpoint, seen_vertices);
   else if (dimension == 3 && params.exterior_opening > 0.0)
-    extra.opening_cells = labelling.openingEvidence (params.exterior_opening);
+    extra.opening_cells = labelling.openingEvidence (params.exterior_opening, !vertex_normals.empty ());
   labelling.propagate ();
   return extra;
 }

@@ -4,6 +4,8 @@
  */
 #include "core/interior/open_exterior.h"
 
+#include "core/geometry/cell_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -85,6 +87,30 @@ openExteriorCells (const std::vector<Eigen::Vector3d>& vertices, const std::vect
     }
   }
   return reached;
+}
+
+std::vector<Eigen::Vector3d>
+openingNormals (const std::vector<Eigen::Vector3d>& vertices, const std::vector<FlowCell>& cells, const std::vector<std::uint8_t>& reached)
+{
+  std::vector<Eigen::Vector3d> normals (vertices.size (), Eigen::Vector3d::Zero ());
+  for (std::size_t c = 0; c < cells.size (); ++c)
+  {
+    if (!reached[c])
+      continue;
+    const Eigen::Vector3d centre = cellCircumcentre (vertices, cells[c], 3);
+    for (int i = 0; i < 4; ++i)
+    {
+      const auto v = static_cast<std::size_t> (cells[c].vertices[static_cast<std::size_t> (i)]);
+      const Eigen::Vector3d outward = centre - vertices[v];
+      const double length = outward.norm ();
+      if (length > 0.0 && std::isfinite (length))
+        normals[v] += outward / length;
+    }
+  }
+  for (auto& n : normals)
+    if (n.squaredNorm () > 0.0)
+      n.normalize ();
+  return normals;
 }
 
 } // namespace core

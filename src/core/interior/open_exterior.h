@@ -28,5 +28,13 @@ medianNearestDistance (const std::vector<Eigen::Vector3d>& vertices, const std::
 std::vector<std::uint8_t>
 openExteriorCells (const std::vector<Eigen::Vector3d>& vertices, const std::vector<FlowCell>& cells, double opening);
 
+/** \brief Outward directions of the samples the open exterior touches: for every vertex of a cell
+  * marked in \a reached (openExteriorCells), the mean direction from it to those cells'
+  * circumcentres (as the power crust's outer poles point outward), unit length; zero for the other
+  * vertices. Where the two sides of a noisy thin wall merge, each sample still faces the side it
+  * was reached from. */
+std::vector<Eigen::Vector3d>
+openingNormals (const std::vector<Eigen::Vector3d>& vertices, const std::vector<FlowCell>& cells, const std::vector<std::uint8_t>& reached);
+
 } // namespace core
 } // namespace pcl_flowseg
