@@ -62,8 +62,16 @@ public:
   void
   normalEvidence (const std::vector<Eigen::Vector3d>& vertex_normals)
   {
-    for (std::size_t c = 0; c < cells_.size (); ++c)
-    {
+    const auto usable = [&] (std::size_t v) { return vertex_normals[v].allFinite () && vertex_normals[v].squaredNorm () > 0; };
+    // Mean cosine between each vertex's normal and the direction to the circumcentre, measured on
+    // all workers (cells with no usable normal skip the circumcentre); evidence is given in cell order.
+    std::vector<double> mean_cosine (cells_.size (), 0.0);
+    parallelFor (cells_.size (), [&] (std::size_t c) {
+      bool any = false;
+      for (int i = 0; i < f_ && !any; ++i)
+        any = usable (static_cast<std::size_t> (cells_[c].vertices[i]));
+      if (!any)
+        return;
       const Eigen::Vector3d centre = cellCircumcentre (vertices_, cells_[c], d_);
       double u = 0.0;
       int count = 0;
@@ -72,15 +80,17 @@ public:
         const std::size_t v = static_cast<std::size_t> (cells_[c].vertices[i]);
         const Eigen::Vector3d to_centre = centre - vertices_[v];
         const double len = to_centre.norm ();
-        if (len > 0 && vertex_normals[v].allFinite () && vertex_normals[v].squaredNorm () > 0)
+        if (len > 0 && usable (v))
         {
           u += to_centre.dot (vertex_normals[v].normalized ()) / len;
           ++count;
         }
       }
-      if (count > 0)
-        evidence (c, u > 0, std::abs (u) / count);
-    }
+      mean_cosine[c] = count > 0 ? u / count : 0.0;
+    });
+    for (std::size_t c = 0; c < cells_.size (); ++c)
+      if (mean_cosine[c] != 0.0)
+        evidence (c, mean_cosine[c] > 0, std::abs (mean_cosine[c]));
   }
 
   /** Sensor rays: everything between the sensor and a sample (one of the first \a seen vertices) is
