@@ -48,7 +48,7 @@ def test_parameters_round_trip():
     given = dict(rho=1.3, sampling_tolerance=0.25, stump_ratio=0.0, compact_rho=1.5, compact_size=0.0, min_part_share=0.01,
                  single_view_min_part_share=0.02,
                  denoising="off", outliers="off", smoothing="on", smoothing_passes=1, features="both", threads=1, dimension="3", planar_tolerance=1e-6,
-                 viewpoint=(0.0, 0.0, 10.0), memory_limit=8 << 30, separate_interior=True, manifold_repair=False, hidden_side=False, significance=0.05)
+                 viewpoint=(0.0, 0.0, 10.0), memory_limit=8 << 30, separate_interior=True, manifold_repair=False, hidden_side=False, exterior_opening=6.0, significance=0.05)
     seg = fs.segment(points, **given)
     used = seg.parameters
     for name, value in given.items():
@@ -122,7 +122,7 @@ def test_bad_arrays_raise_value_error(array, message):
 BAD_PARAMETERS = [
     dict(rho=-1), dict(rho=float("nan")), dict(rho="big"), dict(rho=True), dict(threads=-1), dict(threads=1.5),
     dict(threads=10 ** 30), dict(threads=5000), dict(dimension="cubic"), dict(dimension=3), dict(viewpoint=(1, 2)), dict(viewpoint="up"),
-    dict(viewpoint=(0, 0, float("inf"))), dict(viewpoint=b"abc"), dict(viewpoint=[0, 0, "z"]), dict(rho=[1.0]), dict(features="outside"), dict(denoising="maybe"), dict(outliers="sometimes"), dict(smoothing_passes=99), dict(smoothing_passes=-1), dict(smoothing_passes=0), dict(smoothing="sometimes"), dict(separate=1), dict(manifold_repair="yes"),
+    dict(viewpoint=(0, 0, float("inf"))), dict(viewpoint=b"abc"), dict(viewpoint=[0, 0, "z"]), dict(rho=[1.0]), dict(features="outside"), dict(denoising="maybe"), dict(outliers="sometimes"), dict(smoothing_passes=99), dict(smoothing_passes=-1), dict(smoothing_passes=0), dict(smoothing="sometimes"), dict(separate=1), dict(manifold_repair="yes"), dict(exterior_opening=1.0), dict(exterior_opening=float("nan")),
     dict(significance=1.5), dict(memory_limit=-5), dict(stump_ratio=0.5), dict(compact_size=-1),
 ]
 
