@@ -62,8 +62,8 @@ checkParameters (const FlowParameters& p)
     return Status::error ("denoising must be automatic, off or always");
   const double opening = p.interior.exterior_opening;
   if (!std::isfinite (opening) || (opening != 0.0 && opening < kMinExteriorOpening))
-    return Status::error ("the exterior opening must be 0 (off) or a finite number >= " + std::to_string (kMinExteriorOpening).substr (0, 3) +
-                          " sample spacings" + got (opening));
+    return Status::error ("the exterior opening must be 0 (off) or a finite number of sample spacings >= " +
+                          std::to_string (static_cast<int> (kMinExteriorOpening)) + got (opening));
   if (p.interior.viewpoint && !p.interior.viewpoint->allFinite ())
     return Status::error ("the viewpoint has non-finite coordinates");
   if (p.features != FeatureSide::Interior && p.features != FeatureSide::Exterior && p.features != FeatureSide::Both)

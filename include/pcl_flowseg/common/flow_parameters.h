@@ -163,7 +163,8 @@ struct InteriorParameters
   double exterior_opening = 4.0;
 };
 
-/** \brief Smallest InteriorParameters::exterior_opening other than 0, in sample spacings. */
+/** \brief Smallest InteriorParameters::exterior_opening other than 0, in sample spacings (a whole
+  * number: messages print it as one). */
 constexpr double kMinExteriorOpening = 3.0;
 
 /** \brief Most worker threads a run may be given (ExecutionParameters::threads). */
