@@ -54,6 +54,8 @@ meshesIn (const std::string& dir, std::size_t per_group)
     }
     closedir (d);
   }
+  const auto by_name = [] (const MeshFile& a, const MeshFile& b) { return a.name < b.name; };
+  std::sort (out.begin (), out.end (), by_name);
   std::sort (folders.begin (), folders.end ());
   for (const auto& folder : folders)
   {
@@ -65,13 +67,12 @@ meshesIn (const std::string& dir, std::size_t per_group)
           in_folder.push_back ({dir + "/" + folder + "/" + e->d_name, folder + "/" + e->d_name, folder});
       closedir (d);
     }
-    std::sort (in_folder.begin (), in_folder.end (), [] (const MeshFile& a, const MeshFile& b) { return a.name < b.name; });
+    std::sort (in_folder.begin (), in_folder.end (), by_name);
     if (per_group && in_folder.size () > per_group)
       in_folder.resize (per_group);
     out.insert (out.end (), in_folder.begin (), in_folder.end ());
   }
-  std::stable_sort (out.begin (), out.end (), [] (const MeshFile& a, const MeshFile& b) { return a.group < b.group; });
-  return out;
+  return out; // loose meshes by name, then each folder's by name
 }
 
 std::vector<double>
