@@ -303,6 +303,13 @@ def test_a_scan_query_finds_its_shape_among_complete_ones(tmp_path, capfd):
     assert sum(h.compared for h in db.query(query, k=0)) == 1
     with pytest.raises(ValueError, match="at least 1"):
         db.view_candidates = 0
+    bare = fs.Database()
+    for name, _, signature in db.entries():
+        stripped = signature.without_views()
+        assert stripped.view_count == 0 and signature.view_count == 42 and len(stripped) == len(signature)
+        bare.add(name, name, stripped)
+    assert bare.query(query, k=0) == []  # a scan finds nothing without views
+    assert bare.query(fs.signature_of_file(balls), k=1)[0].name == "balls"  # a complete shape still does
     capfd.readouterr()
     fs.signature_of_file(scan)  # its viewpoint forgotten: warned
     assert "looks like a single view" in capfd.readouterr().err
