@@ -282,17 +282,26 @@ evaluateRun (const std::string& name, const pcl_flowseg::TriangleMesh& mesh, con
   }
 }
 
+/** The header of a table with \a leading columns (e.g. "| mesh |") and one column per point count
+  * and noise level, with its separator row. */
 void
-printPivot (const std::vector<PivotRow>& pivot, const Options& o)
+printRunColumns (const char* leading, std::size_t leading_count, const Options& o)
 {
-  std::printf ("\nAgreement in %% by points and noise (clean runs: \"c\" = boundary closed but not manifold):\n\n| mesh |");
+  std::printf ("%s", leading);
   for (double count : o.counts)
     for (double noise : o.noises)
       std::printf (" %.0fk, %.2f%% |", count / 1000, 100 * noise);
-  std::printf ("\n|---|");
-  for (std::size_t k = 0; k < o.counts.size () * o.noises.size (); ++k)
+  std::printf ("\n|");
+  for (std::size_t k = 0; k < leading_count + o.counts.size () * o.noises.size (); ++k)
     std::printf ("---|");
   std::printf ("\n");
+}
+
+void
+printPivot (const std::vector<PivotRow>& pivot, const Options& o)
+{
+  std::printf ("\nAgreement in %% by points and noise (clean runs: \"c\" = boundary closed but not manifold):\n\n");
+  printRunColumns ("| mesh |", 1, o);
   for (const auto& row : pivot)
   {
     std::printf ("| %s |", row.mesh.c_str ());
@@ -328,14 +337,8 @@ printClasses (const std::map<std::string, std::vector<Summary>>& by_group, const
 {
   if (by_group.empty ())
     return;
-  std::printf ("\nMean volume IoU per class%s:\n\n| class | models |", o.poisson ? " (module / Poisson)" : "");
-  for (double count : o.counts)
-    for (double noise : o.noises)
-      std::printf (" %.0fk, %.2f%% |", count / 1000, 100 * noise);
-  std::printf ("\n|---|---|");
-  for (std::size_t k = 0; k < o.counts.size () * o.noises.size (); ++k)
-    std::printf ("---|");
-  std::printf ("\n");
+  std::printf ("\nMean volume IoU per class%s:\n\n", o.poisson ? " (module / Poisson)" : "");
+  printRunColumns ("| class | models |", 2, o);
   for (const auto& [group, runs] : by_group)
   {
     std::printf ("| %s | %d |", group.c_str (), runs.front ().runs);

@@ -2,6 +2,8 @@
  * Thin walls under noise: a thin-walled cup keeps its cavity outside (InteriorParameters::exterior_opening).
  * SPDX-License-Identifier: GPL-3.0-or-later
  */
+#include "test_support.h"
+
 #include <pcl_flowseg/segmentation/flow_pipeline.h>
 
 #include <gtest/gtest.h>
@@ -68,10 +70,7 @@ segmentCup (const std::vector<V>& pts, double opening)
   FlowParameters params;
   params.preparation.dimension = DimensionMode::Spatial;
   params.interior.exterior_opening = opening;
-  FlowResult r;
-  const Status s = runFlowSegmentation (pts, params, r);
-  EXPECT_TRUE (s.ok) << s.message;
-  return r;
+  return flowseg_test::segmentWithParameters (pts, params);
 }
 
 /** Share of the volume of the cells whose centroid passes \a where that is labelled inside. */
